@@ -1,0 +1,144 @@
+using System.Buffers.Binary;
+
+namespace AcShadow.Core.Dat;
+
+/// <summary>
+/// The container layer of a dat file: header, B-tree directory and block chains. Each block starts
+/// with a 4-byte offset of the next block; the rest of the block is object data. Reads are serialised
+/// on the stream the caller hands in, so one archive may be shared by many threads.
+/// </summary>
+public sealed class DatArchive : IDisposable
+{
+    private readonly Stream _stream;
+    private readonly bool _ownsStream;
+    private readonly object _gate = new();
+    private readonly DatDirectoryEntry[] _entries;
+    private readonly Dictionary<uint, int> _indexById;
+
+    public string Name { get; }
+    public DatHeader Header { get; }
+    public long Length { get; }
+
+    /// <summary>All directory entries, sorted by id.</summary>
+    public IReadOnlyList<DatDirectoryEntry> Entries => _entries;
+
+    private DatArchive(Stream stream, bool ownsStream, string name)
+    {
+        _stream = stream;
+        _ownsStream = ownsStream;
+        Name = name;
+        Length = stream.Length;
+        if (Length < DatHeader.Size)
+            throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
+        var headerBytes = ReadRaw(0, DatHeader.Size);
+        Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
+        _entries = ReadDirectory();
+        _indexById = new Dictionary<uint, int>(_entries.Length);
+        for (var i = 0; i < _entries.Length; i++) _indexById[_entries[i].Id] = i;
+    }
+
+    /// <summary>Opens a dat from a readable, seekable stream.</summary>
+    public static DatArchive Open(Stream stream, string name, bool ownsStream = true)
+    {
+        if (!stream.CanRead || !stream.CanSeek)
+            throw new ArgumentException("a dat stream must be readable and seekable", nameof(stream));
+        try
+        {
+            return new DatArchive(stream, ownsStream, name);
+        }
+        catch
+        {
+            if (ownsStream) stream.Dispose();
+            throw;
+        }
+    }
+
+    public bool Contains(uint id) => _indexById.ContainsKey(id);
+
+    public bool TryGetEntry(uint id, out DatDirectoryEntry entry)
+    {
+        if (_indexById.TryGetValue(id, out var i)) { entry = _entries[i]; return true; }
+        entry = default;
+        return false;
+    }
+
+    /// <summary>The object's bytes with its block chain followed, or null when the dat has no such id.</summary>
+    public byte[]? ReadObjectBytes(uint id)
+    {
+        if (!TryGetEntry(id, out var entry)) return null;
+        return ReadChain(entry.Offset, checked((int)entry.Size), $"object 0x{id:X8}");
+    }
+
+    /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
+    public int MaxIteration => _entries.Length == 0 ? 0 : _entries.Max(e => e.Iteration);
+
+    private DatDirectoryEntry[] ReadDirectory()
+    {
+        var result = new List<DatDirectoryEntry>();
+        if (Header.RootBlock == 0) return [];
+        var visited = new HashSet<int>();
+        Walk(Header.RootBlock, 0);
+        result.Sort((a, b) => a.Id.CompareTo(b.Id));
+        for (var i = 1; i < result.Count; i++)
+            if (result[i].Id == result[i - 1].Id)
+                throw new DatFormatException($"{Name}: the directory lists id 0x{result[i].Id:X8} twice");
+        return result.ToArray();
+
+        void Walk(int offset, int depth)
+        {
+            if (depth > 32) throw new DatFormatException($"{Name}: B-tree deeper than 32 levels (cycle?)");
+            if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
+            var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"B-tree node 0x{offset:X8}");
+            var node = DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
+            result.AddRange(node.Entries);
+            foreach (var child in node.Branches) Walk(child, depth + 1);
+        }
+    }
+
+    private byte[] ReadChain(int start, int size, string what)
+    {
+        var blockSize = Header.BlockSize;
+        var payload = blockSize - 4;
+        var buffer = new byte[size];
+        var filled = 0;
+        var block = start;
+        var hops = 0;
+        var maxHops = (int)(Length / blockSize) + 1;
+        lock (_gate)
+        {
+            while (filled < size)
+            {
+                if (block <= 0 || block + 4L > Length)
+                    throw new DatFormatException($"{Name}: {what} block chain points at 0x{block:X8}, outside the {Length}-byte file");
+                if (++hops > maxHops)
+                    throw new DatFormatException($"{Name}: {what} block chain loops");
+                var next = BinaryPrimitives.ReadInt32LittleEndian(ReadRawLocked(block, 4));
+                var take = Math.Min(payload, size - filled);
+                if (block + 4L + take > Length)
+                    throw new DatFormatException($"{Name}: {what} runs past the end of the file");
+                ReadRawLocked(block + 4, take).CopyTo(buffer.AsSpan(filled));
+                filled += take;
+                block = next & 0x7FFFFFFF;
+            }
+        }
+        return buffer;
+    }
+
+    private byte[] ReadRaw(long offset, int count)
+    {
+        lock (_gate) return ReadRawLocked(offset, count);
+    }
+
+    private byte[] ReadRawLocked(long offset, int count)
+    {
+        var bytes = new byte[count];
+        _stream.Position = offset;
+        _stream.ReadExactly(bytes);
+        return bytes;
+    }
+
+    public void Dispose()
+    {
+        if (_ownsStream) _stream.Dispose();
+    }
+}

@@ -1,0 +1,48 @@
+using System.Collections.Concurrent;
+using AcShadow.Core.Dat.Objects;
+
+namespace AcShadow.Core.Dat;
+
+/// <summary>
+/// <see cref="IDatSource"/> over a <see cref="DatArchive"/>: decodes objects on demand and caches them,
+/// so a GfxObj shared by many Setups is decoded once. Safe to use from many threads.
+/// </summary>
+public sealed class DatDatabase : IDatSource, IDisposable
+{
+    private readonly DatArchive _archive;
+    private readonly ConcurrentDictionary<uint, Lazy<object?>> _cache = new();
+
+    public DatDatabase(DatArchive archive)
+    {
+        _archive = archive;
+        Info = new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize);
+    }
+
+    public static DatDatabase Open(Stream stream, string name) => new(DatArchive.Open(stream, name));
+
+    public DatSourceInfo Info { get; }
+    public DatArchive Archive => _archive;
+
+    public Setup? ReadSetup(uint id) => Decode(id, DatObjectKind.Setup, Setup.Read);
+    public GfxObj? ReadGfxObj(uint id) => Decode(id, DatObjectKind.GfxObj, GfxObj.Read);
+    public LandBlockInfo? ReadLandBlockInfo(uint id) => Decode(id, DatObjectKind.LandBlockInfo, LandBlockInfo.Read);
+
+    public IReadOnlyList<uint> ListIds(DatObjectKind kind) =>
+        _archive.Entries.Where(e => kind.Contains(e.Id)).Select(e => e.Id).ToArray();
+
+    private T? Decode<T>(uint id, DatObjectKind kind, Func<DatBinaryReader, T> read) where T : class
+    {
+        if (!kind.Contains(id)) return null;
+        var lazy = _cache.GetOrAdd(id, key => new Lazy<object?>(() =>
+        {
+            var bytes = _archive.ReadObjectBytes(key);
+            if (bytes is null) return null;
+            var what = $"{kind} 0x{key:X8} in {_archive.Name}";
+            var value = read(new DatBinaryReader(bytes, what));
+            return value;
+        }, LazyThreadSafetyMode.ExecutionAndPublication));
+        return (T?)lazy.Value;
+    }
+
+    public void Dispose() => _archive.Dispose();
+}

@@ -1,0 +1,28 @@
+namespace AcShadow.Core.Dat;
+
+/// <summary>The object types acshadow reads, and the id range each lives in.</summary>
+public enum DatObjectKind
+{
+    GfxObj,
+    Setup,
+    LandBlockInfo,
+}
+
+public static class DatObjectKinds
+{
+    public static bool Contains(this DatObjectKind kind, uint id) => kind switch
+    {
+        DatObjectKind.GfxObj => id is >= 0x01000000 and <= 0x0100FFFF,
+        DatObjectKind.Setup => id is >= 0x02000000 and <= 0x0200FFFF,
+        DatObjectKind.LandBlockInfo => (id & 0xFFFF) == 0xFFFE,
+        _ => false,
+    };
+
+    public static string RangeText(this DatObjectKind kind) => kind switch
+    {
+        DatObjectKind.GfxObj => "0x01000000-0x0100FFFF",
+        DatObjectKind.Setup => "0x02000000-0x0200FFFF",
+        DatObjectKind.LandBlockInfo => "0xXXYYFFFE",
+        _ => "?",
+    };
+}

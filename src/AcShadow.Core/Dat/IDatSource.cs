@@ -1,0 +1,20 @@
+using AcShadow.Core.Dat.Objects;
+
+namespace AcShadow.Core.Dat;
+
+/// <summary>
+/// Everything acshadow needs from a dat: the one seam between the domain and the file format, so a
+/// package reader (Chorizite.DatReaderWriter) can replace <see cref="DatDatabase"/> without touching
+/// the domain. Missing ids give null; malformed objects throw <see cref="DatFormatException"/>.
+/// </summary>
+public interface IDatSource
+{
+    DatSourceInfo Info { get; }
+    Setup? ReadSetup(uint id);
+    GfxObj? ReadGfxObj(uint id);
+    LandBlockInfo? ReadLandBlockInfo(uint id);
+    IReadOnlyList<uint> ListIds(DatObjectKind kind);
+}
+
+/// <summary>What identifies the dat a result came from (recorded in index.json).</summary>
+public sealed record DatSourceInfo(string FileName, long Size, DatFileKind Kind, int Iteration, int BlockSize);

@@ -1,0 +1,39 @@
+namespace AcShadow.Core.Dat.Objects;
+
+/// <summary>
+/// BSP node tags: four ASCII characters read as a little-endian int, so "LEAF" is 0x4C454146.
+/// Capital P / N: the node has a positive / negative child.
+/// </summary>
+public enum BspNodeType : uint
+{
+    Leaf = 0x4C454146,   // LEAF
+    Portal = 0x504F5254, // PORT (drawing/cell trees only)
+    BPnn = 0x42506E6E,
+    BPIn = 0x4250496E,
+    BpIN = 0x4270494E,
+    BpnN = 0x42706E4E,
+    BPIN = 0x4250494E,
+    BPnN = 0x42506E4E,
+}
+
+public static class BspNodeTypes
+{
+    public static string Tag(this BspNodeType type)
+    {
+        var v = (uint)type;
+        return new string([(char)(v >> 24), (char)((v >> 16) & 0xFF), (char)((v >> 8) & 0xFF), (char)(v & 0xFF)]);
+    }
+
+    public static bool HasPos(this BspNodeType t) => t is BspNodeType.BPnn or BspNodeType.BPIn or BspNodeType.BPIN or BspNodeType.BPnN;
+    public static bool HasNeg(this BspNodeType t) => t is BspNodeType.BpIN or BspNodeType.BpnN or BspNodeType.BPIN or BspNodeType.BPnN;
+    public static bool IsInternal(this BspNodeType t) => t.HasPos() || t.HasNeg();
+
+    /// <summary>The tag for an internal node with the given children.</summary>
+    public static BspNodeType ForChildren(bool pos, bool neg) => (pos, neg) switch
+    {
+        (true, true) => BspNodeType.BPIN,
+        (true, false) => BspNodeType.BPIn,
+        (false, true) => BspNodeType.BpIN,
+        _ => throw new ArgumentException("an internal BSP node needs at least one child"),
+    };
+}

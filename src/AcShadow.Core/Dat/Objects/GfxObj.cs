@@ -1,0 +1,101 @@
+using System.Numerics;
+
+namespace AcShadow.Core.Dat.Objects;
+
+/// <summary>
+/// A GfxObj (0x01xxxxxx): vertices, and when <see cref="GfxObjFlags.HasPhysics"/> is set the physics
+/// polygons and PhysicsBSP. Decoding stops after the sort centre: drawing polygons and the drawing BSP
+/// play no part in collision, so they are not read. Writing emits them when given (the forge's
+/// drawing-only objects) with a one-leaf drawing BSP.
+/// </summary>
+public sealed record GfxObj(
+    uint Id,
+    GfxObjFlags Flags,
+    IReadOnlyList<uint> Surfaces,
+    IReadOnlyDictionary<ushort, Vector3> Vertices,
+    IReadOnlyList<KeyValuePair<ushort, Polygon>> PhysicsPolygons,
+    PhysicsBspNode? PhysicsBsp,
+    Vector3 SortCenter,
+    IReadOnlyList<KeyValuePair<ushort, Polygon>> DrawingPolygons)
+{
+    public bool HasPhysics => Flags.HasFlag(GfxObjFlags.HasPhysics) && PhysicsBsp is not null;
+
+    public static GfxObj Read(DatBinaryReader r)
+    {
+        var id = r.ReadUInt32();
+        var flags = (GfxObjFlags)r.ReadUInt32();
+        var surfaceCount = r.ReadCount(r.ReadCompressedUInt32(), 4, "surface");
+        var surfaces = new uint[surfaceCount];
+        for (var i = 0; i < surfaceCount; i++) surfaces[i] = r.ReadUInt32();
+
+        var vertexType = r.ReadInt32();
+        if (vertexType != 1) throw new DatFormatException($"GfxObj 0x{id:X8}: vertex type {vertexType} is not the SW vertex type (1)");
+        var vertexCount = r.ReadCount(r.ReadUInt32(), 28, "vertex");
+        var vertices = new Dictionary<ushort, Vector3>(vertexCount);
+        for (var i = 0; i < vertexCount; i++)
+        {
+            var key = r.ReadUInt16();
+            var uvCount = r.ReadUInt16();
+            var origin = r.ReadVector3();
+            r.ReadVector3(); // normal: drawing only
+            r.ReadBytes(uvCount * 8);
+            vertices[key] = origin;
+        }
+
+        var physicsPolygons = new List<KeyValuePair<ushort, Polygon>>();
+        PhysicsBspNode? bsp = null;
+        if (flags.HasFlag(GfxObjFlags.HasPhysics))
+        {
+            var polyCount = r.ReadCount(r.ReadCompressedUInt32(), 12, "physics polygon");
+            for (var i = 0; i < polyCount; i++)
+            {
+                var key = r.ReadUInt16();
+                physicsPolygons.Add(new(key, Polygon.Read(r)));
+            }
+            bsp = PhysicsBspNode.Read(r);
+        }
+        var sortCenter = r.ReadVector3();
+        return new GfxObj(id, flags, surfaces, vertices, physicsPolygons, bsp, sortCenter, []);
+    }
+
+    public void Write(DatBinaryWriter w)
+    {
+        w.WriteUInt32(Id);
+        w.WriteUInt32((uint)Flags);
+        w.WriteCompressedUInt32((uint)Surfaces.Count);
+        foreach (var s in Surfaces) w.WriteUInt32(s);
+        w.WriteInt32(1);
+        w.WriteUInt32((uint)Vertices.Count);
+        foreach (var (key, origin) in Vertices.OrderBy(kv => kv.Key))
+        {
+            w.WriteUInt16(key);
+            w.WriteUInt16(0);
+            w.WriteVector3(origin);
+            w.WriteVector3(Vector3.Zero);
+        }
+        if (Flags.HasFlag(GfxObjFlags.HasPhysics))
+        {
+            w.WriteCompressedUInt32((uint)PhysicsPolygons.Count);
+            foreach (var (key, poly) in PhysicsPolygons)
+            {
+                w.WriteUInt16(key);
+                poly.Write(w);
+            }
+            (PhysicsBsp ?? throw new InvalidOperationException($"GfxObj 0x{Id:X8} has the physics flag but no PhysicsBSP")).Write(w);
+        }
+        w.WriteVector3(SortCenter);
+        if (Flags.HasFlag(GfxObjFlags.HasDrawing))
+        {
+            w.WriteCompressedUInt32((uint)DrawingPolygons.Count);
+            foreach (var (key, poly) in DrawingPolygons)
+            {
+                w.WriteUInt16(key);
+                poly.Write(w);
+            }
+            // One drawing leaf: tag, leaf index (drawing leaves carry nothing else).
+            w.WriteUInt32((uint)BspNodeType.Leaf);
+            w.WriteInt32(0);
+        }
+        if (Flags.HasFlag(GfxObjFlags.HasDIDDegrade)) w.WriteUInt32(0);
+    }
+}

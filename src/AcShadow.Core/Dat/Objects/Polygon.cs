@@ -1,0 +1,48 @@
+namespace AcShadow.Core.Dat.Objects;
+
+/// <summary>
+/// A GfxObj polygon: vertex ids into the GfxObj's vertex array. UV index lists are present unless the
+/// stippling says NoPos / NoNeg (negative UVs only for Clockwise polygons).
+/// </summary>
+public sealed record Polygon(
+    Stippling Stippling,
+    SidesType SidesType,
+    short PosSurface,
+    short NegSurface,
+    IReadOnlyList<short> VertexIds,
+    IReadOnlyList<byte> PosUVIndices,
+    IReadOnlyList<byte> NegUVIndices)
+{
+    public static Polygon Read(DatBinaryReader r)
+    {
+        var count = r.ReadByte();
+        var stippling = (Stippling)r.ReadByte();
+        var sides = (SidesType)r.ReadInt32();
+        var pos = r.ReadInt16();
+        var neg = r.ReadInt16();
+        var ids = new short[count];
+        for (var i = 0; i < count; i++) ids[i] = r.ReadInt16();
+        byte[] posUv = [], negUv = [];
+        if (!stippling.HasFlag(Stippling.NoPos)) posUv = r.ReadBytes(count);
+        if (!stippling.HasFlag(Stippling.NoNeg) && sides == SidesType.Clockwise) negUv = r.ReadBytes(count);
+        return new Polygon(stippling, sides, pos, neg, ids, posUv, negUv);
+    }
+
+    public void Write(DatBinaryWriter w)
+    {
+        if (VertexIds.Count > byte.MaxValue) throw new InvalidOperationException($"a polygon holds at most 255 vertices, not {VertexIds.Count}");
+        w.WriteByte((byte)VertexIds.Count);
+        w.WriteByte((byte)Stippling);
+        w.WriteInt32((int)SidesType);
+        w.WriteInt16(PosSurface);
+        w.WriteInt16(NegSurface);
+        foreach (var id in VertexIds) w.WriteInt16(id);
+        if (!Stippling.HasFlag(Stippling.NoPos)) WriteUv(w, PosUVIndices);
+        if (!Stippling.HasFlag(Stippling.NoNeg) && SidesType == SidesType.Clockwise) WriteUv(w, NegUVIndices);
+    }
+
+    private void WriteUv(DatBinaryWriter w, IReadOnlyList<byte> uv)
+    {
+        for (var i = 0; i < VertexIds.Count; i++) w.WriteByte(i < uv.Count ? uv[i] : (byte)0);
+    }
+}
