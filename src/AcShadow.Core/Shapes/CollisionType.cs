@@ -1,0 +1,9 @@
+namespace AcShadow.Core.Shapes;
+
+/// <summary>How a shape collides: a part's PhysicsBSP, a vertical cylinder, or a sphere.</summary>
+public enum CollisionType
+{
+    Bsp,
+    Cylinder,
+    Sphere,
+}
