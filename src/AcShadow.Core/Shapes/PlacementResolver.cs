@@ -1,0 +1,21 @@
+using AcShadow.Core.Dat.Objects;
+
+namespace AcShadow.Core.Shapes;
+
+/// <summary>
+/// Chooses the placement frame the parts are posed by.
+/// Retail (CPartArray::SetPlacementFrame): Resting (0x65), else Default (0), else no frame at all.
+/// Union (the seed design): Resting, else Default, else the first placement in the Setup — a divergence
+/// from retail that the tool exposes rather than hides.
+/// </summary>
+public static class PlacementResolver
+{
+    public static PlacementResolution Resolve(Setup setup, ShapePolicy policy)
+    {
+        var requested = Placement.Name(Placement.Resting);
+        var frame = setup.FindPlacement(Placement.Resting) ?? setup.FindPlacement(Placement.Default);
+        if (frame is null && policy == ShapePolicy.Union && setup.PlacementFrames.Count > 0)
+            frame = setup.PlacementFrames[0];
+        return new PlacementResolution(requested, frame?.Name ?? PlacementResolution.NoneName, frame);
+    }
+}

@@ -1,0 +1,177 @@
+using System.Numerics;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Geometry;
+
+namespace AcShadow.Core.Shapes;
+
+/// <summary>
+/// Turns a Setup into the collision shapes an entity registers. Pure: the Setup and a GfxObj lookup in,
+/// a <see cref="ShadowShapeSet"/> out. Everything skipped becomes a <see cref="Diagnostic"/>.
+/// </summary>
+public static class ShadowShapeBuilder
+{
+    public static ShadowShapeSet Build(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options)
+    {
+        var diagnostics = new List<Diagnostic>();
+        var scale = options.EntityScale;
+        var placement = PlacementResolver.Resolve(setup, options.Policy);
+        var parts = LookUpParts(setup, gfxObjs, diagnostics);
+        var partsHaveBsp = parts.Any(p => p?.HasPhysics == true);
+
+        // CPartArray::CacheHasPhysicsBSP computes the state from the parts; Setup.Flags' bit is not read.
+        var flagSaysBsp = setup.Flags.HasFlag(SetupFlags.HasPhysicsBsp);
+        if (flagSaysBsp != partsHaveBsp)
+            diagnostics.Add(new(DiagnosticCodes.FlagMismatch,
+                $"Setup.Flags HasPhysicsBSP is {(flagSaysBsp ? "set" : "clear")} but {(partsHaveBsp ? "a part has" : "no part has")} a PhysicsBSP; the parts decide"));
+
+        var shapes = options.Policy switch
+        {
+            ShapePolicy.Retail => BuildRetail(setup, parts, partsHaveBsp, placement, scale, diagnostics),
+            ShapePolicy.Union => BuildUnion(setup, parts, placement, scale, diagnostics),
+            _ => throw new ArgumentOutOfRangeException(nameof(options)),
+        };
+        if (shapes.Count == 0)
+            diagnostics.Add(new(DiagnosticCodes.NoShapes, "no collision shapes: nothing of this object collides"));
+        foreach (var shape in shapes.Where(s => !IsFinite(s)))
+            diagnostics.Add(new(DiagnosticCodes.NonFinite, $"{Describe(shape)}: non-finite position, rotation, scale or radius (NaN or infinity in the dat)"));
+        return new ShadowShapeSet(setup.Id, options.Policy, placement, scale, partsHaveBsp, shapes, diagnostics);
+    }
+
+    private static GfxObj?[] LookUpParts(Setup setup, Func<uint, GfxObj?> gfxObjs, List<Diagnostic> diagnostics)
+    {
+        var parts = new GfxObj?[setup.Parts.Count];
+        for (var i = 0; i < parts.Length; i++)
+        {
+            var id = setup.Parts[i];
+            try
+            {
+                parts[i] = gfxObjs(id);
+                if (parts[i] is null)
+                    diagnostics.Add(new(DiagnosticCodes.MissingGfxObj, $"part {i} (GfxObj 0x{id:X8}) is not in the dat: it contributes nothing"));
+            }
+            catch (DatFormatException e)
+            {
+                diagnostics.Add(new(DiagnosticCodes.UnreadableGfxObj, $"part {i} (GfxObj 0x{id:X8}) cannot be read: {e.Message}"));
+            }
+        }
+        return parts;
+    }
+
+    /// <summary>
+    /// CPhysicsObj::FindObjCollisions picks one family: parts' BSPs when any part has one, else
+    /// CylSpheres, else Spheres.
+    /// </summary>
+    private static List<ShadowShape> BuildRetail(Setup setup, GfxObj?[] parts, bool partsHaveBsp, PlacementResolution placement, float scale, List<Diagnostic> diagnostics)
+    {
+        var shapes = new List<ShadowShape>();
+        if (partsHaveBsp)
+        {
+            var useDefaultScale = setup.DefaultScale.Count == parts.Length;
+            if (setup.DefaultScale.Count > 0 && !useDefaultScale)
+                diagnostics.Add(new(DiagnosticCodes.DefaultScaleCount, $"DefaultScale has {setup.DefaultScale.Count} entries for {parts.Length} parts: ignored"));
+            for (var i = 0; i < parts.Length; i++)
+            {
+                var gfx = parts[i];
+                if (gfx?.HasPhysics != true) continue;
+                if (!TryRetailPose(placement, parts.Length, i, out var pose, diagnostics, setup.Parts[i])) continue;
+                var partScale = scale;
+                if (useDefaultScale)
+                {
+                    // CPhysicsPart::find_obj_collisions passes GfxObjScale.Z as the uniform BSP scale.
+                    var s = setup.DefaultScale[i];
+                    partScale *= s.Z;
+                    if (s.X != s.Z || s.Y != s.Z)
+                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z"));
+                }
+                shapes.Add(BspShape(i, gfx, pose, scale, partScale));
+            }
+            return shapes;
+        }
+        for (var i = 0; i < setup.CylSpheres.Count; i++)
+        {
+            var c = setup.CylSpheres[i];
+            if (c.Radius <= 0f) diagnostics.Add(new(DiagnosticCodes.ZeroRadius, $"CylSphere {i} has radius {c.Radius}"));
+            shapes.Add(new ShadowShape(ShapeSource.CylSphere, i, null, CollisionType.Cylinder, c.Origin * scale, Quaternion.Identity, scale, c.Radius * scale, c.Height * scale, null));
+        }
+        if (shapes.Count > 0) return shapes;
+        for (var i = 0; i < setup.Spheres.Count; i++)
+        {
+            var s = setup.Spheres[i];
+            if (s.Radius <= 0f) diagnostics.Add(new(DiagnosticCodes.ZeroRadius, $"Sphere {i} has radius {s.Radius}"));
+            shapes.Add(new ShadowShape(ShapeSource.Sphere, i, null, CollisionType.Sphere, s.Center * scale, Quaternion.Identity, scale, s.Radius * scale, 0f, null));
+        }
+        return shapes;
+    }
+
+    /// <summary>
+    /// CPartArray::UpdateParts poses min(NumParts, frames) parts; with no frame a one-part object sits at
+    /// the entity origin and the parts of a multi-part object have no meaningful pose.
+    /// </summary>
+    private static bool TryRetailPose(PlacementResolution placement, int partCount, int index, out Frame pose, List<Diagnostic> diagnostics, uint gfxId)
+    {
+        if (placement.Frame is { } frame)
+        {
+            if (index < frame.Frames.Count) { pose = frame.Frames[index]; return true; }
+            diagnostics.Add(new(DiagnosticCodes.NoPose, $"part {index} (GfxObj 0x{gfxId:X8}): placement {frame.Name} has only {frame.Frames.Count} frame(s); the part gets no pose and is skipped"));
+            pose = default;
+            return false;
+        }
+        if (partCount == 1) { pose = Frame.Identity; return true; }
+        diagnostics.Add(new(DiagnosticCodes.NoPose, $"part {index} (GfxObj 0x{gfxId:X8}): the Setup has neither a Resting nor a Default placement, so a multi-part object's part has no pose; skipped"));
+        pose = default;
+        return false;
+    }
+
+    /// <summary>The seed design's builder (§4.5), reproduced exactly so its divergences can be measured.</summary>
+    private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, PlacementResolution placement, float scale, List<Diagnostic> diagnostics)
+    {
+        var shapes = new List<ShadowShape>();
+        for (var i = 0; i < setup.CylSpheres.Count; i++)
+        {
+            var c = setup.CylSpheres[i];
+            if (c.Radius <= 0f) { diagnostics.Add(new(DiagnosticCodes.ZeroRadius, $"CylSphere {i} has radius {c.Radius}: skipped")); continue; }
+            var height = c.Height > 0f ? c.Height : c.Radius * 4f;
+            shapes.Add(new ShadowShape(ShapeSource.CylSphere, i, null, CollisionType.Cylinder, c.Origin * scale, Quaternion.Identity, scale, c.Radius * scale, height * scale, null));
+        }
+        if (setup.CylSpheres.Count == 0)
+        {
+            for (var i = 0; i < setup.Spheres.Count; i++)
+            {
+                var s = setup.Spheres[i];
+                if (s.Radius <= 0f) { diagnostics.Add(new(DiagnosticCodes.ZeroRadius, $"Sphere {i} has radius {s.Radius}: skipped")); continue; }
+                shapes.Add(new ShadowShape(ShapeSource.Sphere, i, null, CollisionType.Cylinder, s.Center * scale, Quaternion.Identity, scale, s.Radius * scale, s.Radius * 2f * scale, null));
+            }
+        }
+        for (var i = 0; i < parts.Length; i++)
+        {
+            var gfx = parts[i];
+            if (gfx?.HasPhysics != true) continue;
+            var frame = placement.Frame;
+            var pose = frame is not null && i < frame.Frames.Count ? frame.Frames[i] : Frame.Identity;
+            shapes.Add(BspShape(i, gfx, pose, scale, scale));
+        }
+        return shapes;
+    }
+
+    private static ShadowShape BspShape(int partIndex, GfxObj gfx, Frame pose, float entityScale, float partScale)
+    {
+        var root = gfx.PhysicsBsp!.BoundingSphere;
+        var position = pose.Origin * entityScale;
+        var center = position + QuaternionRotation.Rotate(pose.Orientation, root.Center * partScale);
+        var radius = root.Radius * partScale;
+        return new ShadowShape(ShapeSource.Part, partIndex, gfx.Id, CollisionType.Bsp, position, pose.Orientation, partScale, radius, 0f, new Sphere(center, radius));
+    }
+
+    private static bool IsFinite(ShadowShape s) =>
+        float.IsFinite(s.LocalPosition.X) && float.IsFinite(s.LocalPosition.Y) && float.IsFinite(s.LocalPosition.Z)
+        && float.IsFinite(s.LocalRotation.X) && float.IsFinite(s.LocalRotation.Y) && float.IsFinite(s.LocalRotation.Z) && float.IsFinite(s.LocalRotation.W)
+        && float.IsFinite(s.Scale) && float.IsFinite(s.Radius) && float.IsFinite(s.CylHeight);
+
+    private static string Describe(ShadowShape s) => s.Source switch
+    {
+        ShapeSource.Part => $"part {s.SourceIndex} (GfxObj 0x{s.GfxObjId:X8})",
+        ShapeSource.CylSphere => $"CylSphere {s.SourceIndex}",
+        _ => $"Sphere {s.SourceIndex}",
+    };
+}
