@@ -1,0 +1,15 @@
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Export;
+
+/// <summary>A Setup's export: its shadow file, the BSP dumps its shapes reference, and every diagnostic.</summary>
+public sealed record SetupExport(
+    Setup Setup,
+    ShadowShapeSet Set,
+    OutputFile Shadow,
+    IReadOnlyList<OutputFile> BspFiles,
+    IReadOnlyList<Diagnostic> Diagnostics)
+{
+    public IEnumerable<OutputFile> Files => BspFiles.Prepend(Shadow);
+}

@@ -1,0 +1,82 @@
+using System.Numerics;
+using System.Text.Json;
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Dat.Objects;
+
+namespace AcShadow.Core.Json;
+
+/// <summary>
+/// Reads an "acshadow.bsp/1" file back into a <see cref="BspDump"/>, so consumers of the fixtures query
+/// exactly what the tool computed. Malformed input is a <see cref="FormatException"/> naming the field.
+/// </summary>
+public static class BspFileReader
+{
+    public static BspDump Read(string json)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var root = doc.RootElement;
+        var format = Str(root, "format");
+        if (format != BspFileFormat.Format) throw new FormatException($"format is \"{format}\", expected \"{BspFileFormat.Format}\"");
+        if (!JsonIds.TryParse(Str(root, "gfxObjId"), out var id)) throw new FormatException("gfxObjId is not a hex id");
+
+        var vertices = Arr(root, "vertices").Select(v => new BspVertex(Int(v, "id"), Vec(Prop(v, "position")))).ToArray();
+        var polygons = Arr(root, "polygons").Select(p => new BspPolygon(
+            Int(p, "id"),
+            Arr(p, "vertexIds").Select(e => e.GetInt32()).ToArray(),
+            OptionalPlane(Prop(p, "plane")),
+            Enum.Parse<SidesType>(Str(p, "sidesType")),
+            (Stippling)Int(p, "stippling"))).ToArray();
+        var nodes = Arr(root, "nodes").Select(ReadNode).ToArray();
+        var s = Prop(root, "stats");
+        var stats = new BspStats(Int(s, "vertexCount"), Int(s, "polygonCount"), Int(s, "nodeCount"), Int(s, "leafCount"),
+            Int(s, "solidLeafCount"), Int(s, "maxDepth"),
+            Arr(s, "degeneratePolygons").Select(e => e.GetInt32()).ToArray(),
+            Arr(s, "nonPlanarPolygons").Select(e => e.GetInt32()).ToArray());
+        var diagnostics = Arr(root, "diagnostics").Select(e => e.GetString() ?? "").ToArray();
+        return new BspDump(id, Sphere(Prop(root, "boundingSphere")), vertices, polygons, nodes, stats, diagnostics);
+    }
+
+    private static BspNode ReadNode(JsonElement n)
+    {
+        var tag = Str(n, "type");
+        var type = ParseTag(tag);
+        if (type == BspNodeType.Leaf)
+            return new BspNode(Int(n, "index"), type, null, Sphere(Prop(n, "sphere")), null, null,
+                Int(n, "leafIndex"), Prop(n, "solid").GetBoolean(), Arr(n, "polygons").Select(e => e.GetInt32()).ToArray());
+        return new BspNode(Int(n, "index"), type, OptionalPlane(Prop(n, "plane")), Sphere(Prop(n, "sphere")),
+            OptionalInt(Prop(n, "pos")), OptionalInt(Prop(n, "neg")), 0, false, []);
+    }
+
+    private static BspNodeType ParseTag(string tag)
+    {
+        if (tag.Length != 4) throw new FormatException($"node type \"{tag}\" is not a 4-letter tag");
+        var value = ((uint)tag[0] << 24) | ((uint)tag[1] << 16) | ((uint)tag[2] << 8) | tag[3];
+        var type = (BspNodeType)value;
+        if (!Enum.IsDefined(type)) throw new FormatException($"unknown node type \"{tag}\"");
+        return type;
+    }
+
+    internal static JsonElement Prop(JsonElement e, string name) =>
+        e.TryGetProperty(name, out var v) ? v : throw new FormatException($"missing field \"{name}\"");
+
+    internal static string Str(JsonElement e, string name) => Prop(e, name).GetString() ?? throw new FormatException($"\"{name}\" is null");
+    internal static int Int(JsonElement e, string name) => Prop(e, name).GetInt32();
+    internal static float Float(JsonElement e, string name) => Prop(e, name).GetSingle();
+    internal static IEnumerable<JsonElement> Arr(JsonElement e, string name) => Prop(e, name).EnumerateArray();
+
+    internal static Vector3 Vec(JsonElement e)
+    {
+        var a = e.EnumerateArray().Select(x => x.GetSingle()).ToArray();
+        if (a.Length != 3) throw new FormatException("a vector needs 3 numbers");
+        return new Vector3(a[0], a[1], a[2]);
+    }
+
+    internal static Sphere Sphere(JsonElement e) => new(Vec(Prop(e, "center")), Float(e, "radius"));
+
+    internal static Quaternion Quat(JsonElement e) => new(Float(e, "x"), Float(e, "y"), Float(e, "z"), Float(e, "w"));
+
+    private static Plane? OptionalPlane(JsonElement e) =>
+        e.ValueKind == JsonValueKind.Null ? null : new Plane(Vec(Prop(e, "normal")), Float(e, "d"));
+
+    private static int? OptionalInt(JsonElement e) => e.ValueKind == JsonValueKind.Null ? null : e.GetInt32();
+}

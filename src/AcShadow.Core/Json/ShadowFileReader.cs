@@ -1,0 +1,55 @@
+using System.Text.Json;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Shapes;
+using static AcShadow.Core.Json.BspFileReader;
+
+namespace AcShadow.Core.Json;
+
+/// <summary>
+/// Reads the shapes of an "acshadow.shadow/1" file back, so a consumer of the fixtures (or the collision
+/// reference) works from exactly what the tool wrote. The Setup facts block is informational and not
+/// read back.
+/// </summary>
+public static class ShadowFileReader
+{
+    public static ShadowShapeSet Read(string json)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var root = doc.RootElement;
+        var format = Str(root, "format");
+        if (format != ShadowFileFormat.Format) throw new FormatException($"format is \"{format}\", expected \"{ShadowFileFormat.Format}\"");
+        if (!JsonIds.TryParse(Str(root, "setupId"), out var setupId)) throw new FormatException("setupId is not a hex id");
+        if (!ShapePolicies.TryParse(Str(root, "policy"), out var policy)) throw new FormatException("unknown policy");
+        var placement = Prop(root, "placement");
+        var shapes = Arr(root, "shapes").Select(ReadShape).ToArray();
+        var diagnostics = Arr(root, "diagnostics").Select(d => new Diagnostic(Str(d, "code"), Str(d, "message"))).ToArray();
+        var setup = Prop(root, "setup");
+        return new ShadowShapeSet(setupId, policy,
+            new PlacementResolution(Str(placement, "requested"), Str(placement, "used"), null),
+            Float(root, "entityScale"), Prop(setup, "hasPhysicsBsp").GetBoolean(), shapes, diagnostics);
+    }
+
+    private static ShadowShape ReadShape(JsonElement s)
+    {
+        var source = Str(s, "source") switch
+        {
+            "part" => ShapeSource.Part,
+            "cylSphere" => ShapeSource.CylSphere,
+            "sphere" => ShapeSource.Sphere,
+            var other => throw new FormatException($"unknown shape source \"{other}\""),
+        };
+        var type = Str(s, "collisionType") switch
+        {
+            "bsp" => CollisionType.Bsp,
+            "cylinder" => CollisionType.Cylinder,
+            "sphere" => CollisionType.Sphere,
+            var other => throw new FormatException($"unknown collision type \"{other}\""),
+        };
+        var gfxElement = Prop(s, "gfxObjId");
+        uint? gfx = gfxElement.ValueKind == JsonValueKind.Null ? null
+            : JsonIds.TryParse(gfxElement.GetString(), out var g) ? g : throw new FormatException("gfxObjId is not a hex id");
+        Sphere? local = s.TryGetProperty("localSphere", out var ls) ? BspFileReader.Sphere(ls) : null;
+        return new ShadowShape(source, Int(s, "sourceIndex"), gfx, type, Vec(Prop(s, "localPosition")), Quat(Prop(s, "localRotation")),
+            Float(s, "scale"), Float(s, "radius"), Float(s, "cylHeight"), local);
+    }
+}

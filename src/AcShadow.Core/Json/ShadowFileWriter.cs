@@ -1,0 +1,58 @@
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Json;
+
+/// <summary>Writes a Setup's <see cref="ShadowShapeSet"/> as the canonical "acshadow.shadow/1" file (docs/formats.md).</summary>
+public static class ShadowFileWriter
+{
+    public static byte[] Write(Setup setup, ShadowShapeSet set) => CanonicalJsonWriter.WriteUtf8(ToJson(setup, set));
+
+    public static JsonObj ToJson(Setup setup, ShadowShapeSet set) => new JsonObj()
+        .Add("format", ShadowFileFormat.Format)
+        .Add("setupId", JsonIds.Format(set.SetupId))
+        .Add("policy", set.Policy.Name())
+        .Add("placement", new JsonObj().Add("requested", set.Placement.Requested).Add("used", set.Placement.Used))
+        .Add("entityScale", set.EntityScale)
+        .Add("setup", SetupFacts(setup, set))
+        .Add("shapes", JsonArr.Of(set.Shapes, Shape))
+        .Add("diagnostics", JsonArr.Of(set.Diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
+
+    private static JsonObj SetupFacts(Setup setup, ShadowShapeSet set) => new JsonObj()
+        .Add("flags", (long)setup.Flags)
+        .Add("flagNames", JsonArr.Of(FlagNames(setup.Flags)))
+        .Add("parts", JsonArr.Of(setup.Parts.Select(JsonIds.Format)))
+        .Add("defaultScale", JsonArr.Of(setup.DefaultScale, JsonArr.Of))
+        .Add("placements", JsonArr.Of(setup.PlacementFrames.Select(p => p.Name)))
+        .Add("radius", setup.Radius)
+        .Add("height", setup.Height)
+        .Add("stepUpHeight", setup.StepUpHeight)
+        .Add("stepDownHeight", setup.StepDownHeight)
+        .Add("cylSpheres", JsonArr.Of(setup.CylSpheres, c => new JsonObj().Add("origin", c.Origin).Add("radius", c.Radius).Add("height", c.Height)))
+        .Add("spheres", JsonArr.Of(setup.Spheres, JsonShapes.Sphere))
+        .Add("hasPhysicsBsp", set.PartsHavePhysicsBsp)
+        .Add("hasPhysicsBspFlag", setup.Flags.HasFlag(SetupFlags.HasPhysicsBsp));
+
+    private static IEnumerable<string> FlagNames(SetupFlags flags) =>
+        Enum.GetValues<SetupFlags>().Where(f => f != SetupFlags.None && flags.HasFlag(f)).Select(f => f.ToString());
+
+    private static JsonNode Shape(ShadowShape s)
+    {
+        var obj = new JsonObj()
+            .Add("source", ShadowFileFormat.SourceName(s.Source))
+            .Add("sourceIndex", s.SourceIndex)
+            .Add("gfxObjId", s.GfxObjId is { } id ? JsonIds.Format(id) : null)
+            .Add("collisionType", ShadowFileFormat.CollisionTypeName(s.CollisionType))
+            .Add("localPosition", s.LocalPosition)
+            .Add("localRotation", JsonShapes.Quaternion(s.LocalRotation))
+            .Add("scale", s.Scale)
+            .Add("radius", s.Radius)
+            .Add("cylHeight", s.CylHeight);
+        if (s.CollisionType == CollisionType.Bsp && s.GfxObjId is { } gfx)
+        {
+            if (s.LocalSphere is { } sphere) obj.Add("localSphere", JsonShapes.Sphere(sphere));
+            obj.Add("bsp", ShadowFileFormat.BspReference(gfx));
+        }
+        return obj;
+    }
+}
