@@ -1,0 +1,12 @@
+using System.CommandLine;
+
+namespace AcShadow.Cli.Commands;
+
+/// <summary>Every subcommand besides dump; adding a command is one line here.</summary>
+public static class ExtraCommands
+{
+    public static IEnumerable<Command> All(CliConsole console)
+    {
+        yield break;
+    }
+}

@@ -1,0 +1,71 @@
+using AcShadow.Core.Dat;
+using AcShadow.Forge;
+
+namespace AcShadow.Cli.Infrastructure;
+
+/// <summary>
+/// Finds the dat: --dat (the file, or a folder holding client_portal.dat), else ACSHADOW_DAT, else the
+/// built-in forged sample, opened from memory through the same reader a retail dat goes through.
+/// </summary>
+public static class DatLocator
+{
+    public const string EnvironmentVariable = "ACSHADOW_DAT";
+    public const string PortalFileName = "client_portal.dat";
+    public const string CellFileName = "client_cell_1.dat";
+
+    public static OpenedDat Open(string? datOption, string? cellDatOption, CliConsole console)
+    {
+        var portalPath = datOption ?? NullIfEmpty(console.Environment(EnvironmentVariable));
+        if (portalPath is null)
+        {
+            console.Error.WriteLine("acshadow: no --dat and no ACSHADOW_DAT: using the built-in SYNTHETIC sample data (forged, not retail).");
+            var (portalBytes, cellBytes) = SampleDats.Build();
+            var samplePortal = OpenBytes(portalBytes, "sample/" + PortalFileName);
+            var sampleCell = cellDatOption is null && cellBytes is not null ? OpenBytes(cellBytes, "sample/" + CellFileName) : null;
+            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat");
+            return new OpenedDat(samplePortal, cellFromOption ?? sampleCell, "the built-in synthetic sample", true);
+        }
+        var source = datOption is null ? EnvironmentVariable : "--dat";
+        var portal = OpenFile(portalPath, PortalFileName, source);
+        try
+        {
+            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat");
+            return new OpenedDat(portal, cell, portal.Info.FileName, false);
+        }
+        catch
+        {
+            portal.Dispose();
+            throw;
+        }
+    }
+
+    private static string? NullIfEmpty(string? s) => string.IsNullOrWhiteSpace(s) ? null : s;
+
+    private static DatDatabase OpenBytes(byte[] bytes, string name) => DatDatabase.Open(new MemoryStream(bytes, writable: false), name);
+
+    private static DatDatabase OpenFile(string path, string expectedName, string source)
+    {
+        var file = Directory.Exists(path) ? Path.Combine(path, expectedName) : path;
+        if (!File.Exists(file))
+            throw new CliException(ExitCodes.DatUnreadable, Directory.Exists(path)
+                ? $"{source}: folder {path} has no {expectedName}: pass the dat file itself or the folder that holds it"
+                : $"{source}: {path} does not exist: pass the path of your {expectedName} (or the folder holding it)");
+        FileStream stream;
+        try
+        {
+            stream = new FileStream(file, FileMode.Open, FileAccess.Read, FileShare.Read, 1 << 16, FileOptions.RandomAccess);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.DatUnreadable, $"{source}: cannot open {file}: {e.Message}");
+        }
+        try
+        {
+            return DatDatabase.Open(stream, Path.GetFileName(file));
+        }
+        catch (DatFormatException e)
+        {
+            throw new CliException(ExitCodes.DatUnreadable, $"{source}: {file} is not a readable dat: {e.Message}");
+        }
+    }
+}

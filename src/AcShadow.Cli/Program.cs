@@ -1,0 +1,3 @@
+using AcShadow.Cli;
+
+return AcShadowApp.Run(args, CliConsole.System());
