@@ -10,7 +10,7 @@ public static class ArgumentParsing
 {
     public static uint SetupId(string text, string option = "--setup")
     {
-        if (!JsonIds.TryParse(text, out var id) || !text.Trim().TrimStart('0', 'x', 'X').All(Uri.IsHexDigit))
+        if (!JsonIds.TryParse(text, out var id))
             throw new CliException(ExitCodes.Usage, $"{option}: '{text}' is not a Setup id: write it in hex, e.g. 0x020019FF or 020019FF");
         if (!DatObjectKind.Setup.Contains(id))
             throw new CliException(ExitCodes.Usage, $"{option}: 0x{id:X8} is outside the Setup range {DatObjectKind.Setup.RangeText()}");
