@@ -1,0 +1,95 @@
+using System.Buffers.Binary;
+using AcShadow.Core.Dat;
+
+namespace AcShadow.Tests.Dat;
+
+public class DatArchiveTests
+{
+    private static Dictionary<uint, byte[]> Objects(int count, int seed, int maxSize)
+    {
+        var random = new Random(seed);
+        var objects = new Dictionary<uint, byte[]>();
+        while (objects.Count < count)
+        {
+            var id = 0x01000000u + (uint)random.Next(0, 0xFFFF);
+            var bytes = new byte[random.Next(0, maxSize)];
+            random.NextBytes(bytes);
+            objects[id] = bytes;
+        }
+        return objects;
+    }
+
+    [Theory]
+    [InlineData(0, 1024)]
+    [InlineData(1, 1024)]
+    [InlineData(61, 1024)]
+    [InlineData(62, 256)]
+    [InlineData(500, 1024)]
+    [InlineData(4000, 256)] // needs a three-level B-tree (a two-level one holds 3843)
+    public void Every_object_written_reads_back_byte_for_byte(int count, int blockSize)
+    {
+        var objects = Objects(count, count, 3000);
+        var bytes = DatArchiveWriter.Write(objects, new DatArchiveWriter.Options(DatFileKind.Portal, blockSize));
+        using var archive = DatArchive.Open(new MemoryStream(bytes), "test.dat");
+        Assert.Equal(blockSize, archive.Header.BlockSize);
+        Assert.Equal(bytes.Length, archive.Header.FileSize);
+        Assert.Equal(objects.Keys.OrderBy(k => k), archive.Entries.Select(e => e.Id));
+        foreach (var (id, content) in objects) Assert.Equal(content, archive.ReadObjectBytes(id));
+        Assert.Null(archive.ReadObjectBytes(0x02000000));
+    }
+
+    [Fact]
+    public void Writing_is_deterministic()
+    {
+        var objects = Objects(300, 3, 2000);
+        var a = DatArchiveWriter.Write(objects, new DatArchiveWriter.Options(DatFileKind.Portal));
+        var b = DatArchiveWriter.Write(new Dictionary<uint, byte[]>(objects.Reverse()), new DatArchiveWriter.Options(DatFileKind.Portal));
+        Assert.Equal(a, b);
+    }
+
+    [Fact]
+    public void Header_carries_the_retail_magic_at_0x140()
+    {
+        var bytes = DatArchiveWriter.Write(Objects(3, 1, 10), new DatArchiveWriter.Options(DatFileKind.Cell, 256));
+        Assert.Equal(0x5442, BinaryPrimitives.ReadInt32LittleEndian(bytes.AsSpan(0x140)));
+        using var archive = DatArchive.Open(new MemoryStream(bytes), "cell.dat");
+        Assert.Equal(DatFileKind.Cell, archive.Header.Kind);
+    }
+
+    [Fact]
+    public void A_file_that_is_not_a_dat_is_refused_with_a_reason()
+    {
+        var e = Assert.Throws<DatFormatException>(() => DatArchive.Open(new MemoryStream(new byte[4096]), "zeros.dat"));
+        Assert.Contains("magic", e.Message);
+        var shortFile = Assert.Throws<DatFormatException>(() => DatArchive.Open(new MemoryStream(new byte[10]), "short.dat"));
+        Assert.Contains("too short", shortFile.Message);
+    }
+
+    [Fact]
+    public void A_truncated_dat_is_refused_not_misread()
+    {
+        var bytes = DatArchiveWriter.Write(Objects(200, 5, 4000), new DatArchiveWriter.Options(DatFileKind.Portal));
+        var truncated = bytes.AsSpan(0, bytes.Length / 2).ToArray();
+        Assert.Throws<DatFormatException>(() =>
+        {
+            using var archive = DatArchive.Open(new MemoryStream(truncated), "truncated.dat");
+            foreach (var e in archive.Entries) archive.ReadObjectBytes(e.Id);
+        });
+    }
+
+    [Theory]
+    [InlineData(0u)]
+    [InlineData(0x7Fu)]
+    [InlineData(0x80u)]
+    [InlineData(0x3FFFu)]
+    [InlineData(0x4000u)]
+    [InlineData(0x3FFFFFFFu)]
+    public void Compressed_uints_round_trip(uint value)
+    {
+        var w = new DatBinaryWriter();
+        w.WriteCompressedUInt32(value);
+        var bytes = w.ToArray();
+        Assert.Equal(value < 0x80 ? 1 : value < 0x4000 ? 2 : 4, bytes.Length);
+        Assert.Equal(value, new DatBinaryReader(bytes, "test").ReadCompressedUInt32());
+    }
+}
