@@ -23,14 +23,14 @@ public sealed class DatDatabase : IDatSource, IDisposable
     public DatSourceInfo Info { get; }
     public DatArchive Archive => _archive;
 
-    public Setup? ReadSetup(uint id) => Decode(id, DatObjectKind.Setup, Setup.Read);
-    public GfxObj? ReadGfxObj(uint id) => Decode(id, DatObjectKind.GfxObj, GfxObj.Read);
-    public LandBlockInfo? ReadLandBlockInfo(uint id) => Decode(id, DatObjectKind.LandBlockInfo, LandBlockInfo.Read);
+    public Setup? ReadSetup(uint id) => Decode(id, DatObjectKind.Setup, Setup.Read, s => s.Id);
+    public GfxObj? ReadGfxObj(uint id) => Decode(id, DatObjectKind.GfxObj, GfxObj.Read, g => g.Id);
+    public LandBlockInfo? ReadLandBlockInfo(uint id) => Decode(id, DatObjectKind.LandBlockInfo, LandBlockInfo.Read, l => l.Id);
 
     public IReadOnlyList<uint> ListIds(DatObjectKind kind) =>
         _archive.Entries.Where(e => kind.Contains(e.Id)).Select(e => e.Id).ToArray();
 
-    private T? Decode<T>(uint id, DatObjectKind kind, Func<DatBinaryReader, T> read) where T : class
+    private T? Decode<T>(uint id, DatObjectKind kind, Func<DatBinaryReader, T> read, Func<T, uint> idOf) where T : class
     {
         if (!kind.Contains(id)) return null;
         var lazy = _cache.GetOrAdd(id, key => new Lazy<object?>(() =>
@@ -39,6 +39,8 @@ public sealed class DatDatabase : IDatSource, IDisposable
             if (bytes is null) return null;
             var what = $"{kind} 0x{key:X8} in {_archive.Name}";
             var value = read(new DatBinaryReader(bytes, what));
+            // Every object starts with its own id: a mismatch means the directory points at the wrong bytes.
+            if (idOf(value) != key) throw new DatFormatException($"{what}: the object's bytes carry id 0x{idOf(value):X8}");
             return value;
         }, LazyThreadSafetyMode.ExecutionAndPublication));
         return (T?)lazy.Value;
