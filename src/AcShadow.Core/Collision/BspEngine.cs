@@ -1,0 +1,8 @@
+namespace AcShadow.Core.Collision;
+
+/// <summary>Which BSP query answers for a part: the retail tree traversal or the brute-force oracle.</summary>
+public enum BspEngine
+{
+    Reference,
+    BruteForce,
+}

@@ -1,0 +1,86 @@
+using System.Numerics;
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Geometry;
+
+namespace AcShadow.Core.Collision;
+
+/// <summary>
+/// The collision reference for one GfxObj: a static sphere overlap answered the way retail answers a
+/// placement test (BSPTREE::find_collisions with InsertType Placement → BSPNODE::sphere_intersects_solid
+/// with the centre check on), in part-local space.
+/// <list type="bullet">
+/// <item>first the broad phase of CGfxObj::find_obj_collisions against the root's sphere;</item>
+/// <item>a node whose bounding sphere the query sphere misses is rejected;</item>
+/// <item>at an internal node, dist = dot(normal, centre) + d and reach = r − ε: dist ≥ reach visits only
+/// the positive child, dist ≤ −reach only the negative one, otherwise both, and the centre check follows
+/// the side the centre is on (negative when dist &lt; 0);</item>
+/// <item>at a leaf (BSPLEAF::sphere_intersects_solid): no listed polygons → clear; centre check on and
+/// solid → blocked; otherwise, if its sphere is hit, blocked when the sphere touches one of its polygons
+/// (<see cref="PolygonSphereTest"/>).</item>
+/// </list>
+/// An absent child is empty space. Thread-safe: queries share only read-only arrays.
+/// </summary>
+public sealed class BspSphereQuery : ISphereOverlap
+{
+    private readonly CompiledPolygon[] _polygons;
+    private readonly CompiledBspNode[] _nodes;
+    private readonly int[] _leafPolygons;
+
+    public CompiledBsp Bsp { get; }
+
+    public BspSphereQuery(CompiledBsp bsp)
+    {
+        Bsp = bsp;
+        _polygons = bsp.Polygons;
+        _nodes = bsp.Nodes;
+        _leafPolygons = bsp.LeafPolygons;
+    }
+
+    public static BspSphereQuery From(BspDump dump) => new(CompiledBsp.Compile(dump));
+
+    public bool Overlaps(Vector3 center, float radius)
+    {
+        if (!SphereBounds.IsValidProbe(center, radius) || _nodes.Length == 0) return false;
+        if (!SphereBounds.BroadPhaseHits(_nodes[0], center, radius)) return false;
+        var reach = radius - PhysicsEpsilon.Value;
+        // Entries are node << 1 | centre-check; a tree never holds more pending nodes than it has nodes.
+        Span<int> stack = _nodes.Length <= 256 ? stackalloc int[_nodes.Length] : new int[_nodes.Length];
+        var top = 0;
+        stack[top++] = 1;
+        while (top > 0)
+        {
+            var entry = stack[--top];
+            ref readonly var node = ref _nodes[entry >> 1];
+            var centreCheck = (entry & 1) != 0;
+            if (node.IsLeaf)
+            {
+                if (node.ListedPolygonCount == 0) continue;
+                if (centreCheck && node.Solid) return true;
+                if (!SphereBounds.NodeSphereHits(node, center, radius)) continue;
+                for (var k = 0; k < node.PolygonCount; k++)
+                    if (PolygonSphereTest.Touches(_polygons[_leafPolygons[node.PolygonStart + k]], center, radius)) return true;
+                continue;
+            }
+            if (!SphereBounds.NodeSphereHits(node, center, radius)) continue;
+            var dist = PolygonPlane.Dot(node.Normal, center) + node.D;
+            if (dist >= reach) Push(stack, ref top, node.Pos, centreCheck);
+            else if (dist <= -reach) Push(stack, ref top, node.Neg, centreCheck);
+            else if (dist < 0f)
+            {
+                Push(stack, ref top, node.Pos, false);
+                Push(stack, ref top, node.Neg, centreCheck);
+            }
+            else
+            {
+                Push(stack, ref top, node.Pos, centreCheck);
+                Push(stack, ref top, node.Neg, false);
+            }
+        }
+        return false;
+    }
+
+    private static void Push(Span<int> stack, ref int top, int child, bool centreCheck)
+    {
+        if (child >= 0) stack[top++] = child << 1 | (centreCheck ? 1 : 0);
+    }
+}

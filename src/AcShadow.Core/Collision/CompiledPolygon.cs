@@ -1,0 +1,52 @@
+using System.Numerics;
+using AcShadow.Core.Geometry;
+
+namespace AcShadow.Core.Collision;
+
+/// <summary>
+/// A physics polygon ready for sphere tests: its retail plane, its vertices in order, and per edge
+/// (previous vertex → vertex, as CPolygon walks them) the edge vector and cross(normal, edge), which
+/// points into the polygon for the winding the plane was made from. Precomputing them changes no bits:
+/// the same float operations run once instead of per query.
+/// </summary>
+public sealed class CompiledPolygon
+{
+    public int Id { get; }
+    public Vector3 Normal { get; }
+    public float D { get; }
+    public Vector3[] Vertices { get; }
+
+    internal readonly Vector3[] EdgeStart;
+    internal readonly Vector3[] Edge;
+    internal readonly float[] EdgeLengthSquared;
+    internal readonly Vector3[] Inward;
+    internal readonly float[] InwardLengthSquared;
+
+    public CompiledPolygon(int id, Plane plane, Vector3[] vertices)
+    {
+        Id = id;
+        Normal = plane.Normal;
+        D = plane.D;
+        Vertices = vertices;
+        var n = vertices.Length;
+        EdgeStart = new Vector3[n];
+        Edge = new Vector3[n];
+        EdgeLengthSquared = new float[n];
+        Inward = new Vector3[n];
+        InwardLengthSquared = new float[n];
+        for (var i = 0; i < n; i++)
+        {
+            var previous = vertices[i == 0 ? n - 1 : i - 1];
+            var edge = Vec.Sub(vertices[i], previous);
+            var inward = Vec.Cross(plane.Normal, edge);
+            EdgeStart[i] = previous;
+            Edge[i] = edge;
+            EdgeLengthSquared[i] = PolygonPlane.Dot(edge, edge);
+            Inward[i] = inward;
+            InwardLengthSquared[i] = PolygonPlane.Dot(inward, inward);
+        }
+    }
+
+    /// <summary>Signed distance of a point from the polygon's plane (dot then + d, fixed order).</summary>
+    public float Distance(Vector3 p) => PolygonPlane.Dot(Normal, p) + D;
+}

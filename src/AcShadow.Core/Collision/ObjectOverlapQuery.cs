@@ -1,0 +1,118 @@
+using System.Numerics;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Collision;
+
+/// <summary>
+/// "Does a query sphere at entity-space centre c with radius r overlap the object?" over a
+/// <see cref="ShadowShapeSet"/>: blocked when any shape blocks. BSP shapes move the sphere into the part's
+/// space (<see cref="PartPose.ToLocal"/>) and ask the part's tree (<see cref="BspSphereQuery"/>, or the
+/// brute force); Cylinder shapes use <see cref="CylinderSphereTest"/> with the base at LocalPosition;
+/// Sphere shapes use <see cref="SphereSphereTest"/>. A shape that cannot be tested (no PhysicsBSP dump, NaN
+/// in its frame, a scale that is zero or not finite) is skipped with a diagnostic naming it.
+/// </summary>
+public sealed class ObjectOverlapQuery : ISphereOverlap
+{
+    private readonly IShapeCheck[] _checks;
+
+    public IReadOnlyList<PreparedShape> Shapes { get; }
+    public IReadOnlyList<Diagnostic> Diagnostics { get; }
+
+    private ObjectOverlapQuery(IShapeCheck[] checks, IReadOnlyList<PreparedShape> shapes, IReadOnlyList<Diagnostic> diagnostics)
+    {
+        _checks = checks;
+        Shapes = shapes;
+        Diagnostics = diagnostics;
+    }
+
+    public static ObjectOverlapQuery Create(IEnumerable<ShadowShape> shapes, Func<uint, CompiledBsp?> bsps, BspEngine engine = BspEngine.Reference)
+    {
+        var log = new DiagnosticLog();
+        var checks = new List<IShapeCheck>();
+        var prepared = new List<PreparedShape>();
+        var queries = new Dictionary<uint, ISphereOverlap>();
+        foreach (var shape in shapes)
+        {
+            var name = PreparedShape.NameOf(shape);
+            if (!Vec.IsFinite(shape.LocalPosition) || !float.IsFinite(shape.Radius) || !float.IsFinite(shape.CylHeight))
+            {
+                log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: NaN or infinity in its position or size; skipped");
+                continue;
+            }
+            switch (shape.CollisionType)
+            {
+                case CollisionType.Bsp:
+                    if (Prepare(shape, name, bsps, log) is not { } part) continue;
+                    var id = part.Bsp!.GfxObjId;
+                    if (!queries.TryGetValue(id, out var query))
+                        queries[id] = query = engine == BspEngine.Reference ? new BspSphereQuery(part.Bsp) : new BruteForceSphereQuery(part.Bsp);
+                    checks.Add(new BspCheck(part.Pose, query));
+                    prepared.Add(part);
+                    break;
+                case CollisionType.Cylinder:
+                    checks.Add(new CylinderCheck(shape.LocalPosition, shape.Radius, shape.CylHeight));
+                    prepared.Add(new PreparedShape(shape, name, new PartPose(shape.LocalPosition, Quaternion.Identity, 1f), null));
+                    break;
+                default:
+                    checks.Add(new SphereCheck(shape.LocalPosition, shape.Radius));
+                    prepared.Add(new PreparedShape(shape, name, new PartPose(shape.LocalPosition, Quaternion.Identity, 1f), null));
+                    break;
+            }
+        }
+        return new ObjectOverlapQuery([.. checks], prepared, log.ToList());
+    }
+
+    public static ObjectOverlapQuery Create(ShadowShapeSet set, Func<uint, CompiledBsp?> bsps, BspEngine engine = BspEngine.Reference) =>
+        Create(set.Shapes, bsps, engine);
+
+    public bool Overlaps(Vector3 center, float radius)
+    {
+        if (!SphereBounds.IsValidProbe(center, radius)) return false;
+        foreach (var check in _checks)
+            if (check.Overlaps(center, radius)) return true;
+        return false;
+    }
+
+    private static PreparedShape? Prepare(ShadowShape shape, string name, Func<uint, CompiledBsp?> bsps, DiagnosticLog log)
+    {
+        if (shape.GfxObjId is not { } id) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: a BSP shape without a GfxObj id; skipped"); return null; }
+        if (!(shape.Scale > 0f) || !float.IsFinite(shape.Scale)) { log.Add(CollisionDiagnosticCodes.SkippedShape, FormattableString.Invariant($"{name}: scale {shape.Scale} cannot be divided by; skipped")); return null; }
+        var rotation = shape.LocalRotation;
+        if (!Vec.IsFinite(rotation)) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: NaN or infinity in its rotation; skipped"); return null; }
+        var lengthSquared = rotation.X * rotation.X + rotation.Y * rotation.Y + rotation.Z * rotation.Z + rotation.W * rotation.W;
+        if (!(lengthSquared > 1e-12f)) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: zero rotation quaternion; skipped"); return null; }
+        if (MathF.Abs(lengthSquared - 1f) > 1e-4f)
+        {
+            var length = MathF.Sqrt(lengthSquared);
+            rotation = new Quaternion(rotation.X / length, rotation.Y / length, rotation.Z / length, rotation.W / length);
+            log.Add(CollisionDiagnosticCodes.NormalisedRotation, FormattableString.Invariant($"{name}: rotation quaternion of length {length:0.######} normalised"));
+        }
+        var bsp = bsps(id);
+        if (bsp is null) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: no PhysicsBSP for GfxObj 0x{id:X8}; skipped"); return null; }
+        return new PreparedShape(shape, name, new PartPose(shape.LocalPosition, rotation, shape.Scale), bsp);
+    }
+
+    private interface IShapeCheck
+    {
+        bool Overlaps(Vector3 center, float radius);
+    }
+
+    private sealed class BspCheck(PartPose pose, ISphereOverlap query) : IShapeCheck
+    {
+        public bool Overlaps(Vector3 center, float radius)
+        {
+            var (localCenter, localRadius) = pose.ToLocal(center, radius);
+            return query.Overlaps(localCenter, localRadius);
+        }
+    }
+
+    private sealed class CylinderCheck(Vector3 baseCenter, float radius, float height) : IShapeCheck
+    {
+        public bool Overlaps(Vector3 center, float r) => CylinderSphereTest.Touches(baseCenter, radius, height, center, r);
+    }
+
+    private sealed class SphereCheck(Vector3 sphereCenter, float radius) : IShapeCheck
+    {
+        public bool Overlaps(Vector3 center, float r) => SphereSphereTest.Touches(sphereCenter, radius, center, r);
+    }
+}

@@ -1,0 +1,17 @@
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Collision;
+
+/// <summary>
+/// A shape the object query tests: where it came from, a readable name ("part 0 (GfxObj 0x010044B5)",
+/// "CylSphere 1", "Sphere 0"), its pose in entity space and, for a BSP shape, its compiled tree.
+/// </summary>
+public sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose, CompiledBsp? Bsp)
+{
+    public static string NameOf(ShadowShape s) => s.Source switch
+    {
+        ShapeSource.Part => $"part {s.SourceIndex} (GfxObj 0x{s.GfxObjId ?? 0:X8})",
+        ShapeSource.CylSphere => $"CylSphere {s.SourceIndex}",
+        _ => $"Sphere {s.SourceIndex}",
+    };
+}
