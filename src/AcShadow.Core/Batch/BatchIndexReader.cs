@@ -1,0 +1,109 @@
+using System.Text.Json;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Json;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>Reads index.json back; anything missing or malformed is a <see cref="FormatException"/> naming the field.</summary>
+public static class BatchIndexReader
+{
+    public static BatchIndex Read(byte[] utf8)
+    {
+        JsonDocument doc;
+        try
+        {
+            doc = JsonDocument.Parse(utf8);
+        }
+        catch (JsonException e)
+        {
+            throw new FormatException($"not JSON: {e.Message}");
+        }
+        using (doc)
+        {
+            var root = doc.RootElement;
+            var format = Str(root, "format", "$");
+            if (format != BatchIndexFormat.Format) throw new FormatException($"$.format is \"{format}\", expected \"{BatchIndexFormat.Format}\"");
+            var inputs = Member(root, "inputs", "$");
+            var policyText = Str(inputs, "policy", "$.inputs");
+            if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"$.inputs.policy \"{policyText}\" is not retail or union");
+            var scale = Member(inputs, "entityScale", "$.inputs");
+            if (scale.ValueKind != JsonValueKind.Number) throw new FormatException("$.inputs.entityScale is not a number");
+            var cell = Member(inputs, "cellDat", "$.inputs");
+            var result = new BatchInputs(
+                Dat(Member(inputs, "dat", "$.inputs"), "$.inputs.dat"),
+                cell.ValueKind == JsonValueKind.Null ? null : Dat(cell, "$.inputs.cellDat"),
+                policy,
+                scale.GetSingle(),
+                Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"));
+            var files = Member(root, "files", "$");
+            if (files.ValueKind != JsonValueKind.Array) throw new FormatException("$.files is not an array");
+            var list = files.EnumerateArray().Select((f, i) =>
+            {
+                var at = $"$.files[{i}]";
+                return new IndexedFile(Str(f, "path", at), Str(f, "kind", at), Str(f, "id", at), Str(f, "sha256", at));
+            }).ToArray();
+            return new BatchIndex(result, list);
+        }
+    }
+
+    private static DatSourceInfo Dat(JsonElement e, string at)
+    {
+        var kindText = Str(e, "kind", at);
+        if (!Enum.TryParse<DatFileKind>(kindText, out var kind)) throw new FormatException($"{at}.kind \"{kindText}\" is not a dat kind");
+        return new DatSourceInfo(Str(e, "fileName", at), Num(e, "size", at), kind, (int)Num(e, "iteration", at), (int)Num(e, "blockSize", at));
+    }
+
+    private static BatchSelection Selection(JsonElement e, string at)
+    {
+        SetupList? list = null;
+        var file = Member(e, "setupsFile", at);
+        if (file.ValueKind != JsonValueKind.Null)
+        {
+            var ids = Member(file, "ids", at + ".setupsFile");
+            if (ids.ValueKind != JsonValueKind.Array) throw new FormatException($"{at}.setupsFile.ids is not an array");
+            list = new SetupList(Str(file, "name", at + ".setupsFile"), ids.EnumerateArray().Select((id, i) =>
+                JsonIds.TryParse(id.ValueKind == JsonValueKind.String ? id.GetString() : null, out var v) ? v
+                    : throw new FormatException($"{at}.setupsFile.ids[{i}] is not a hex id")).ToArray());
+        }
+        uint? landblock = null;
+        var lb = Member(e, "landblock", at);
+        if (lb.ValueKind != JsonValueKind.Null)
+        {
+            if (!LandblockIds.TryParse(lb.ValueKind == JsonValueKind.String ? lb.GetString() : null, out var id))
+                throw new FormatException($"{at}.landblock is not a landblock id");
+            landblock = id;
+        }
+        return new BatchSelection(Bool(e, "doors", at), Bool(e, "all", at), list, landblock);
+    }
+
+    private static JsonElement Member(JsonElement e, string name, string at)
+    {
+        if (e.ValueKind != JsonValueKind.Object) throw new FormatException($"{at} is not an object");
+        return e.TryGetProperty(name, out var v) ? v : throw new FormatException($"{at}.{name} is missing");
+    }
+
+    private static string Str(JsonElement e, string name, string at)
+    {
+        var v = Member(e, name, at);
+        return v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new FormatException($"{at}.{name} is not a string");
+    }
+
+    private static long Num(JsonElement e, string name, string at)
+    {
+        var v = Member(e, name, at);
+        return v.ValueKind == JsonValueKind.Number && v.TryGetInt64(out var n) ? n
+            : throw new FormatException($"{at}.{name} is not an integer");
+    }
+
+    private static bool Bool(JsonElement e, string name, string at)
+    {
+        var v = Member(e, name, at);
+        return v.ValueKind switch
+        {
+            JsonValueKind.True => true,
+            JsonValueKind.False => false,
+            _ => throw new FormatException($"{at}.{name} is not true or false"),
+        };
+    }
+}

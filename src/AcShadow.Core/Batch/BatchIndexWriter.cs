@@ -1,0 +1,65 @@
+using System.Security.Cryptography;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
+using AcShadow.Core.Json;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>
+/// Writes index.json: the run's inputs (enough for verify to regenerate), a summary, what was skipped,
+/// and every file with its id, kind, counts, size and SHA-256. Nothing time- or machine-dependent goes
+/// in, so the index is as reproducible as the files.
+/// </summary>
+public static class BatchIndexWriter
+{
+    public static byte[] Write(BatchInputs inputs, IReadOnlyList<OutputFile> files, IReadOnlyList<SkippedItem> skipped) =>
+        CanonicalJsonWriter.WriteUtf8(ToJson(inputs, files, skipped));
+
+    public static JsonObj ToJson(BatchInputs inputs, IReadOnlyList<OutputFile> files, IReadOnlyList<SkippedItem> skipped) => new JsonObj()
+        .Add("format", BatchIndexFormat.Format)
+        .Add("inputs", Inputs(inputs))
+        .Add("summary", new JsonObj()
+            .Add("files", files.Count)
+            .Add("setups", files.Count(f => f.Kind == OutputKind.Shadow))
+            .Add("bspDumps", files.Count(f => f.Kind == OutputKind.Bsp))
+            .Add("scenes", files.Count(f => f.Kind == OutputKind.Scene))
+            .Add("skipped", skipped.Count)
+            .Add("bytes", files.Sum(f => f.Content.LongLength)))
+        .Add("skipped", JsonArr.Of(skipped, s => new JsonObj()
+            .Add("id", JsonIds.Format(s.Id)).Add("reason", s.Reason).Add("from", JsonArr.Of(s.From.Names()))))
+        .Add("files", JsonArr.Of(files, File));
+
+    private static JsonObj Inputs(BatchInputs inputs)
+    {
+        var selection = inputs.Selection;
+        return new JsonObj()
+            .Add("dat", Dat(inputs.Dat))
+            .Add("cellDat", inputs.CellDat is { } cell ? Dat(cell) : JsonNull.Value)
+            .Add("policy", inputs.Policy.Name())
+            .Add("entityScale", inputs.EntityScale)
+            .Add("selection", new JsonObj()
+                .Add("doors", selection.Doors)
+                .Add("all", selection.All)
+                .Add("setupsFile", selection.Setups is { } list
+                    ? new JsonObj().Add("name", list.Name).Add("ids", JsonArr.Of(list.Ids.Select(JsonIds.Format)))
+                    : JsonNull.Value)
+                .Add("landblock", selection.Landblock is { } lb ? JsonIds.Format(lb) : null));
+    }
+
+    internal static JsonObj Dat(DatSourceInfo info) => new JsonObj()
+        .Add("fileName", info.FileName)
+        .Add("size", info.Size)
+        .Add("kind", info.Kind.ToString())
+        .Add("iteration", info.Iteration)
+        .Add("blockSize", info.BlockSize);
+
+    private static JsonNode File(OutputFile f) => new JsonObj()
+        .Add("path", f.RelativePath)
+        .Add("kind", BatchIndexFormat.KindName(f.Kind))
+        .Add("id", JsonIds.Format(f.Id))
+        .Add("shapes", f.ShapeCount)
+        .Add("polygons", f.PolygonCount)
+        .Add("bytes", f.Content.LongLength)
+        .Add("sha256", Convert.ToHexStringLower(SHA256.HashData(f.Content)));
+}

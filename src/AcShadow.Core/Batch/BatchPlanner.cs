@@ -1,0 +1,46 @@
+using AcShadow.Core.Dat;
+using AcShadow.Core.Scenes;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>
+/// Resolves a <see cref="BatchSelection"/> against the dats: the union of the door catalog, every Setup,
+/// a setups file's ids and a landblock's placed Setups, sorted by id; ids the dat lacks become
+/// <see cref="SkippedItem"/>s, not errors.
+/// </summary>
+public static class BatchPlanner
+{
+    public static BatchPlan Plan(BatchSelection selection, IDatSource portal, IDatSource? cell, IReadOnlyList<uint> doorCatalog)
+    {
+        var requested = new SortedDictionary<uint, SelectionSource>();
+        void Request(IEnumerable<uint> ids, SelectionSource source)
+        {
+            foreach (var id in ids) requested[id] = requested.GetValueOrDefault(id) | source;
+        }
+
+        var inDat = portal.ListIds(DatObjectKind.Setup).ToHashSet();
+        if (selection.Doors) Request(doorCatalog, SelectionSource.Doors);
+        if (selection.All) Request(inDat, SelectionSource.All);
+        if (selection.Setups is { } list) Request(list.Ids, SelectionSource.SetupsFile);
+
+        LandblockScene? scene = null;
+        if (selection.Landblock is { } landblock)
+        {
+            if (cell is null)
+                throw new SelectionException(SelectionProblem.NeedsCellDat, $"--landblock {LandblockIds.Short(landblock)} needs the cell dat: pass --cell-dat PATH (client_cell_1.dat)");
+            var info = cell.ReadLandBlockInfo(landblock)
+                ?? throw new SelectionException(SelectionProblem.NotInDat, $"landblock {LandblockIds.Short(landblock)} has no LandBlockInfo (0x{landblock:X8}) in {cell.Info.FileName}");
+            scene = LandblockScene.From(info);
+            Request(scene.SetupIds, SelectionSource.Landblock);
+        }
+
+        var setups = new List<PlannedSetup>();
+        var skipped = new List<SkippedItem>();
+        foreach (var (id, from) in requested)
+        {
+            if (inDat.Contains(id)) setups.Add(new PlannedSetup(id, from));
+            else skipped.Add(new SkippedItem(id, SkippedItem.NotInDat, from));
+        }
+        return new BatchPlan(setups, scene, skipped);
+    }
+}

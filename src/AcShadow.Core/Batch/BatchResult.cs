@@ -1,0 +1,26 @@
+using AcShadow.Core.Export;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>
+/// A batch run's output in memory: every file (sorted by path, each once), index.json, what was skipped,
+/// and counts for the summary. The same inputs give the same bytes whatever the parallelism.
+/// </summary>
+public sealed record BatchResult(
+    IReadOnlyList<OutputFile> Files,
+    byte[] IndexJson,
+    IReadOnlyList<SkippedItem> Skipped,
+    int SetupsWritten,
+    int BspDumps,
+    int Scenes,
+    IReadOnlyList<(uint Id, Diagnostic Diagnostic)> Diagnostics)
+{
+    public const string IndexPath = "index.json";
+
+    /// <summary>Every file including index.json (last), as written to disk.</summary>
+    public IEnumerable<(string Path, byte[] Content)> AllFiles =>
+        Files.Select(f => (f.RelativePath, f.Content)).Append((IndexPath, IndexJson));
+
+    public long TotalBytes => Files.Sum(f => f.Content.LongLength) + IndexJson.LongLength;
+}

@@ -1,0 +1,10 @@
+using AcShadow.Core.Batch;
+using AcShadow.Core.Export;
+
+namespace AcShadow.Core.Scenes;
+
+/// <summary>
+/// A scene's own output: its scene file and the BSP dumps of the bare GfxObjs it places (the Setups'
+/// files come from the batch's Setup exports), plus the placed ids that could not be described.
+/// </summary>
+public sealed record SceneExport(OutputFile SceneFile, IReadOnlyList<OutputFile> BspFiles, IReadOnlyList<SkippedItem> Skipped);

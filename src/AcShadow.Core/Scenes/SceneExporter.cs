@@ -1,0 +1,128 @@
+using AcShadow.Core.Batch;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Export;
+using AcShadow.Core.Json;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Scenes;
+
+/// <summary>
+/// Writes a landblock's scene file: every placed object with its landblock-relative and world frames
+/// and the file that describes it. Setups point at the shadow file the batch wrote for them; bare
+/// GfxObjs get their BSP dump (through <see cref="ExportEngine"/>) and a one-shape entry.
+/// </summary>
+public static class SceneExporter
+{
+    /// <param name="setups">The batch's export of every Setup the scene places that could be exported.</param>
+    /// <param name="setupProblems">Why a placed Setup has no export (not in the dat, unreadable).</param>
+    public static SceneExport Export(LandblockScene scene, ExportEngine engine,
+        IReadOnlyDictionary<uint, SetupExport> setups, IReadOnlyDictionary<uint, string> setupProblems)
+    {
+        var bspFiles = new SortedDictionary<string, OutputFile>(StringComparer.Ordinal);
+        var skipped = new Dictionary<uint, SkippedItem>();
+        var objects = new JsonArr();
+        int resolved = 0, unresolved = 0;
+        foreach (var placed in scene.Objects)
+        {
+            var entry = Describe(placed, scene, engine, setups, setupProblems, bspFiles, skipped);
+            if (entry.Resolved) resolved++; else unresolved++;
+            objects.Add(entry.Json);
+        }
+
+        var coordinates = scene.Coordinates;
+        var json = new JsonObj()
+            .Add("format", SceneFileFormat.Format)
+            .Add("landblockId", JsonIds.Format(scene.LandBlockInfoId))
+            .Add("landblock", new JsonObj().Add("x", coordinates.X).Add("y", coordinates.Y))
+            .Add("worldOrigin", new JsonArr().Add(JsonNum.Of(coordinates.WorldOriginX)).Add(JsonNum.Of(coordinates.WorldOriginY)).Add(JsonNum.Of(0)))
+            .Add("policy", engine.Options.Policy.Name())
+            .Add("entityScale", engine.Options.EntityScale)
+            .Add("summary", new JsonObj()
+                .Add("objects", scene.Objects.Count)
+                .Add("setups", scene.Objects.Count(o => o.Kind == SceneObjectKind.Setup))
+                .Add("gfxObjs", scene.Objects.Count(o => o.Kind == SceneObjectKind.GfxObj))
+                .Add("resolved", resolved)
+                .Add("unresolved", unresolved))
+            .Add("objects", objects);
+        var file = new OutputFile(SceneFileFormat.PathFor(scene.LandBlockInfoId), OutputKind.Scene, scene.LandBlockInfoId,
+            CanonicalJsonWriter.WriteUtf8(json), 0, 0);
+        return new SceneExport(file, bspFiles.Values.ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
+    }
+
+    private static (JsonObj Json, bool Resolved) Describe(SceneObject placed, LandblockScene scene, ExportEngine engine,
+        IReadOnlyDictionary<uint, SetupExport> setups, IReadOnlyDictionary<uint, string> setupProblems,
+        SortedDictionary<string, OutputFile> bspFiles, Dictionary<uint, SkippedItem> skipped)
+    {
+        var (wx, wy, wz) = WorldFrame.Origin(scene.Coordinates, placed.Frame);
+        var json = new JsonObj()
+            .Add("index", placed.Index)
+            .Add("placedBy", SceneFileFormat.PlacedByName(placed.PlacedBy))
+            .Add("placedIndex", placed.PlacedIndex)
+            .Add("id", JsonIds.Format(placed.Id))
+            .Add("kind", SceneFileFormat.KindName(placed.Kind))
+            .Add("landblockFrame", FrameJson(JsonArr.Of(placed.Frame.Origin), placed.Frame))
+            .Add("worldFrame", FrameJson(new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)), placed.Frame));
+        var diagnostics = new List<Diagnostic>();
+        string? file = null;
+        JsonNode? shapes = null;
+        switch (placed.Kind)
+        {
+            case SceneObjectKind.Setup when setups.TryGetValue(placed.Id, out var export):
+                file = SceneFileFormat.Reference(export.Shadow.RelativePath);
+                break;
+            case SceneObjectKind.Setup:
+                diagnostics.Add(new("unresolved", $"Setup {JsonIds.Format(placed.Id)}: {setupProblems.GetValueOrDefault(placed.Id, SkippedItem.NotInDat)}"));
+                break;
+            case SceneObjectKind.GfxObj:
+                (file, shapes) = DescribeGfxObj(placed.Id, engine, bspFiles, skipped, diagnostics);
+                break;
+            default:
+                diagnostics.Add(new("unresolved", $"id {JsonIds.Format(placed.Id)} is neither a Setup ({DatObjectKind.Setup.RangeText()}) nor a GfxObj ({DatObjectKind.GfxObj.RangeText()})"));
+                break;
+        }
+        json.Add("file", file);
+        if (placed.Kind == SceneObjectKind.GfxObj) json.Add("shapes", shapes ?? new JsonArr());
+        json.Add("diagnostics", JsonArr.Of(diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
+        var resolved = placed.Kind switch
+        {
+            SceneObjectKind.Setup => file is not null,
+            SceneObjectKind.GfxObj => shapes is not null,
+            _ => false,
+        };
+        return (json, resolved);
+    }
+
+    /// <summary>A drawing-only GfxObj is resolved (it has no shapes and no dump: nothing of it collides).</summary>
+    private static (string? File, JsonNode? Shapes) DescribeGfxObj(uint id, ExportEngine engine,
+        SortedDictionary<string, OutputFile> bspFiles, Dictionary<uint, SkippedItem> skipped, List<Diagnostic> diagnostics)
+    {
+        GfxObj? gfx;
+        try
+        {
+            gfx = engine.Dat.ReadGfxObj(id);
+        }
+        catch (DatFormatException e)
+        {
+            var reason = $"unreadable: {e.Message}";
+            skipped[id] = new SkippedItem(id, reason, SelectionSource.Landblock);
+            diagnostics.Add(new(DiagnosticCodes.UnreadableGfxObj, $"GfxObj {JsonIds.Format(id)}: {reason}"));
+            return (null, null);
+        }
+        if (gfx is null)
+        {
+            skipped[id] = new SkippedItem(id, SkippedItem.NotInDat, SelectionSource.Landblock);
+            diagnostics.Add(new("unresolved", $"GfxObj {JsonIds.Format(id)}: {SkippedItem.NotInDat}"));
+            return (null, null);
+        }
+        var set = BareGfxObjShape.Build(gfx, engine.Dat.ReadGfxObj, engine.Options);
+        diagnostics.AddRange(set.Diagnostics);
+        var (dump, dumpDiagnostics) = engine.ExportGfxObj(id);
+        diagnostics.AddRange(dumpDiagnostics);
+        if (dump is not null) bspFiles[dump.RelativePath] = dump;
+        return (dump is null ? null : SceneFileFormat.Reference(dump.RelativePath), BareGfxObjShape.ShapesJson(gfx, set));
+    }
+
+    private static JsonObj FrameJson(JsonArr origin, Frame frame) =>
+        new JsonObj().Add("origin", origin).Add("orientation", JsonShapes.Quaternion(frame.Orientation));
+}
