@@ -1,0 +1,107 @@
+using System.CommandLine;
+using AcShadow.Forge.Spec;
+
+namespace AcShadow.Forge;
+
+/// <summary>
+/// The forge command line. Exit codes: 0 success; 2 bad input (spec errors, bad arguments);
+/// 1 unexpected failure. Errors are one line on stderr (plus the stack trace with --verbose).
+/// Nothing is written unless everything compiled: dats are built in memory first, then each file is
+/// written atomically.
+/// </summary>
+public static class ForgeApp
+{
+    public const int Success = 0, Failure = 1, BadInput = 2;
+    public const string PortalFileName = "client_portal.dat", CellFileName = "client_cell_1.dat";
+
+    /// <summary>Thrown for a bad argument value the parser cannot check (exit 2).</summary>
+    private sealed class UsageException(string message) : Exception(message);
+
+    public static int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    {
+        var verbose = new Option<bool>("--verbose") { Description = "Show stack traces for errors", Recursive = true };
+        var outDir = new Option<string>("--out") { Description = "Directory to write the dat files into (created if missing)", Required = true };
+        var writeSpec = new Option<string?>("--write-spec") { Description = "Also write the spec as JSON to this file" };
+
+        var specArgument = new Argument<string>("spec") { Description = "The spec JSON file (see docs/forge-spec.md)" };
+        var build = new Command("build", "Forge dats from a spec file") { specArgument, outDir };
+        build.SetAction(parse => Guard(parse.GetValue(verbose), stderr, () =>
+            WriteDats(SpecCompiler.Compile(SpecJson.Load(parse.GetValue(specArgument)!)), parse.GetValue(outDir)!, stdout)));
+
+        var sample = new Command("sample", "Forge the built-in sample (doors, statics, creatures, a house, a landblock)") { outDir, writeSpec };
+        sample.SetAction(parse => Guard(parse.GetValue(verbose), stderr, () =>
+        {
+            // The authored spec first: regenerating Sample/sample.json must not depend on the embedded copy.
+            if (parse.GetValue(writeSpec) is { } path) WriteSpec(SampleSpecAuthor.Create(), path, stdout);
+            var (portal, cell) = SampleDats.Build();
+            var spec = SampleDats.Spec;
+            WriteDats(new ForgedDats(portal, cell, spec.GfxObjs.Count, spec.Setups.Count, spec.Landblocks.Count), parse.GetValue(outDir)!, stdout);
+        }));
+
+        var setupCount = new Option<int>("--setups") { Description = "How many Setups (about 1.5 GfxObjs each)", DefaultValueFactory = _ => ScaleSpecGenerator.DefaultSetups };
+        var seed = new Option<int>("--seed") { Description = "Random seed; same seed, same bytes", DefaultValueFactory = _ => ScaleSpecGenerator.DefaultSeed };
+        var scale = new Command("scale", "Forge a realistic-scale dat for benchmarks") { outDir, setupCount, seed, writeSpec };
+        scale.SetAction(parse => Guard(parse.GetValue(verbose), stderr, () =>
+        {
+            var n = parse.GetValue(setupCount);
+            if (n < 1 || n > ScaleSpecGenerator.MaxSetups) throw new UsageException($"--setups {n}: give 1-{ScaleSpecGenerator.MaxSetups}");
+            var spec = ScaleSpecGenerator.Generate(n, parse.GetValue(seed));
+            WriteDats(SpecCompiler.Compile(spec), parse.GetValue(outDir)!, stdout);
+            if (parse.GetValue(writeSpec) is { } path) WriteSpec(spec, path, stdout);
+        }));
+
+        var root = new RootCommand("forge: writes real-format Asheron's Call dat files (client_portal.dat, client_cell_1.dat) from a JSON spec")
+        {
+            build, sample, scale, verbose,
+        };
+
+        var result = root.Parse(args);
+        if (result.Errors.Count > 0)
+        {
+            stderr.WriteLine($"forge: {result.Errors[0].Message} (see forge --help)");
+            return BadInput;
+        }
+        return result.Invoke(new InvocationConfiguration { Output = stdout, Error = stderr, EnableDefaultExceptionHandler = false });
+    }
+
+    private static int Guard(bool verbose, TextWriter stderr, Action action)
+    {
+        try
+        {
+            action();
+            return Success;
+        }
+        catch (Exception e) when (e is SpecException or UsageException)
+        {
+            stderr.WriteLine($"forge: {e.Message}");
+            if (verbose) stderr.WriteLine(e.StackTrace);
+            return BadInput;
+        }
+        catch (Exception e)
+        {
+            stderr.WriteLine($"forge: unexpected failure: {e.GetType().Name}: {e.Message.ReplaceLineEndings(" ")}");
+            if (verbose) stderr.WriteLine(e);
+            return Failure;
+        }
+    }
+
+    private static void WriteDats(ForgedDats dats, string dir, TextWriter stdout)
+    {
+        var portalPath = Path.Combine(dir, PortalFileName);
+        AtomicFile.Write(portalPath, dats.Portal);
+        stdout.WriteLine($"wrote {portalPath} ({dats.Portal.Length} bytes; {dats.GfxObjCount} GfxObjs, {dats.SetupCount} Setups)");
+        if (dats.Cell is { } cell)
+        {
+            var cellPath = Path.Combine(dir, CellFileName);
+            AtomicFile.Write(cellPath, cell);
+            stdout.WriteLine($"wrote {cellPath} ({cell.Length} bytes; {dats.LandblockCount} LandBlockInfos)");
+        }
+    }
+
+    private static void WriteSpec(ForgeSpec spec, string path, TextWriter stdout)
+    {
+        var json = SpecJson.Serialize(spec);
+        AtomicFile.Write(path, System.Text.Encoding.UTF8.GetBytes(json));
+        stdout.WriteLine($"wrote {path} ({json.Length} chars; spec with {spec.GfxObjs.Count} GfxObjs, {spec.Setups.Count} Setups, {spec.Landblocks.Count} landblocks)");
+    }
+}

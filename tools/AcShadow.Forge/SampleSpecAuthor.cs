@@ -1,0 +1,322 @@
+using System.Numerics;
+using AcShadow.Forge.Geometry;
+using AcShadow.Forge.Spec;
+
+namespace AcShadow.Forge;
+
+/// <summary>
+/// Writes the built-in sample spec in code (a 288-polygon house is not typed by hand). Its JSON,
+/// Sample/sample.json, is what the forge embeds and builds; `forge sample --write-spec FILE`
+/// regenerates that file from here, and a test keeps the two identical.
+/// </summary>
+public static class SampleSpecAuthor
+{
+    public const uint DoorSetup = 0x020019FF, DoorLeaf = 0x010044B5, DoorJamb = 0x010044B6;
+    public const uint SinglePartDoorSetup = 0x0200024F, SinglePartDoor = 0x01000A10;
+    public const uint DoubleDoorSetup = 0x02000281, DoubleDoorLeaf = 0x01000B20, DoubleDoorLintel = 0x01000B21, DoubleDoorFrame = 0x01000B22;
+    public const uint CreatureSetup = 0x02001000, CreatureTorso = 0x01001000, CreatureHead = 0x01001001, CreatureLeg = 0x01001002;
+    public const uint ItemSetup = 0x02002000, ItemGem = 0x01002000;
+    public const uint StaticSetup = 0x02003000, Pedestal = 0x01003000, LBlock = 0x01003001, Column = 0x01003002;
+    public const uint FlagWithoutBspSetup = 0x02003100, OtherOnlySetup = 0x02003200, NoPlacementSetup = 0x02003300;
+    public const uint MissingPartSetup = 0x02003400, MissingPart = 0x0100DEAD;
+    public const uint BuildingSetup = 0x02005000, House = 0x01005000;
+    public const uint OddSetup = 0x02006000, OddGfxObj = 0x01006000;
+    public const uint Landblock = 0xA9B4FFFE;
+
+    public static ForgeSpec Create() => new()
+    {
+        Iteration = 1,
+        Provenance = "Setup ids 0x020019FF, 0x0200024F and 0x02000281 are door Setups from the public ACE world database "
+            + "door list (door-setups.tsv); 0x020019FF's part ids, Sphere, Radius and Height follow published retail facts. "
+            + "All geometry is synthetic (invented, part-local metres, Z up); every other id is invented.",
+        Comment = "The forge's built-in sample: one object per collision case acshadow must handle. Regenerate with `forge sample --write-spec`.",
+        GfxObjs =
+        [
+            new MeshBuilder().Box(new(-0.965f, -0.13f, 0f), new(0.965f, 0.13f, 2.2f))
+                .ToSpec(DoorLeaf, true, true, "door leaf: closed box 1.93 x 0.26 x 2.2 m, 6 quads"),
+            new MeshBuilder().Box(new(-0.05f, -0.15f, 0f), new(0.05f, 0.15f, 2.3f))
+                .Polygon([new(0f, 0f, 0f), new(-2f, 0f, 0f), new(-2f, 0f, 0.3f), new(0f, 0f, 0.3f)])
+                .ToSpec(DoorJamb, true, true, "door jamb post (closed box 0.1 x 0.3 x 2.3 m) plus a one-sided threshold quad in y=0 reaching 2 m across the doorway (-x), 0.3 m tall"),
+            new MeshBuilder()
+                .Box(new(-0.95f, -0.05f, 0f), new(0.95f, 0.05f, 2.1f))
+                .Box(new(-1.1f, -0.15f, 0f), new(-0.95f, 0.15f, 2.3f))
+                .Box(new(0.95f, -0.15f, 0f), new(1.1f, 0.15f, 2.3f))
+                .Box(new(-0.95f, -0.15f, 2.1f), new(0.95f, 0.15f, 2.3f))
+                .Polygon([new(-0.95f, 0f, 0f), new(0.95f, 0f, 0f), new(0.95f, 0f, 0.25f), new(-0.95f, 0f, 0.25f)])
+                .ToSpec(SinglePartDoor, true, true, "single-part door: leaf, two posts, lintel and threshold in one GfxObj"),
+            new MeshBuilder().Box(new(0f, -0.05f, 0f), new(0.95f, 0.05f, 2.4f))
+                .ToSpec(DoubleDoorLeaf, true, true, "double-door leaf, hinge edge at local x=0, 0.95 m wide"),
+            new MeshBuilder().Box(new(-1.1f, -0.15f, 2.4f), new(1.1f, 0.15f, 2.7f))
+                .ToSpec(DoubleDoorLintel, true, true, "double-door lintel"),
+            new MeshBuilder()
+                .Box(new(-1.1f, -0.15f, 0f), new(-0.95f, 0.15f, 2.4f))
+                .Box(new(0.95f, -0.15f, 0f), new(1.1f, 0.15f, 2.4f))
+                .Polygon([new(-0.95f, 0f, 0f), new(0.95f, 0f, 0f), new(0.95f, 0f, 0.2f), new(-0.95f, 0f, 0.2f)], "None")
+                .ToSpec(DoubleDoorFrame, true, true, "double-door frame: two posts and a two-sided (sidesType None) threshold across the 1.9 m opening"),
+            new MeshBuilder().Box(new(-0.25f, -0.15f, 0.9f), new(0.25f, 0.15f, 1.45f))
+                .ToSpec(CreatureTorso, false, true, "creature torso, drawing only"),
+            new MeshBuilder().Prism(new(0f, 0f, 0f), 0.12f, 0.3f, 8)
+                .ToSpec(CreatureHead, false, true, "creature head, drawing only"),
+            new MeshBuilder().Box(new(-0.08f, -0.08f, 0f), new(0.08f, 0.08f, 0.9f))
+                .ToSpec(CreatureLeg, false, true, "creature leg, drawing only (used twice)"),
+            Gem().ToSpec(ItemGem, false, true, "item gem (octahedron), drawing only"),
+            new MeshBuilder().Box(new(-0.5f, -0.5f, 0f), new(0.5f, 0.5f, 0.5f), 2, 2, 1)
+                .ToSpec(Pedestal, true, true, "pedestal: closed box with 2x2-subdivided faces"),
+            LShape().ToSpec(LBlock, true, true, "L-shaped closed, non-convex block (7 sides, top and bottom as two convex pieces each)"),
+            new MeshBuilder().Prism(new(0f, 0f, 0f), 0.25f, 2f, 8, 2)
+                .ToSpec(Column, true, true, "octagonal column, 2 rings; also placed bare in the landblock"),
+            HouseMesh().ToSpec(House, true, true, "house 10 x 8 m: floor, two-sided subdivided walls with a door opening, interior wall, gable roof (288 polygons)"),
+            OddMesh().ToSpec(OddGfxObj, true, false, "closed box plus one degenerate (collinear) triangle (polygon 6) and one non-planar quad (polygon 7); physics only"),
+        ],
+        Setups =
+        [
+            new SetupSpec
+            {
+                Id = Hex(DoorSetup),
+                Comment = "3-part door: leaf + two jambs, the second mirrored by 180 deg about Z so both thresholds span the doorway. "
+                    + "Default (leaf open 90 deg about its hinge) differs from Resting (closed) and is listed first: retail asks for Resting.",
+                Parts = [Hex(DoorLeaf), Hex(DoorJamb), Hex(DoorJamb)],
+                Placements = new Dictionary<string, IReadOnlyList<FrameSpec>?>
+                {
+                    ["Default"] = [At(0.965, -0.965, 0, Z(90)), At(1, 0, 0), At(-1, 0, 0, Z(180))],
+                    ["Resting"] = [At(0, 0, 0), At(1, 0, 0), At(-1, 0, 0, Z(180))],
+                },
+                Spheres = [new SphereSpec { Center = [0, 0, 0.018], Radius = 0.1 }],
+                Radius = 0.141,
+                Height = 0.2,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(SinglePartDoorSetup),
+                Comment = "single-part door: one GfxObj holds leaf and frame; Resting only",
+                Parts = [Hex(SinglePartDoor)],
+                Placements = Place(("Resting", [At(0, 0, 0)])),
+                Spheres = [new SphereSpec { Center = [0, 0, 0.02], Radius = 0.1 }],
+                Radius = 0.141,
+                Height = 0.2,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(DoubleDoorSetup),
+                Comment = "double door, 4 parts: two leaves (one GfxObj, mirrored), lintel, frame; Default swings both leaves open",
+                Parts = [Hex(DoubleDoorLeaf), Hex(DoubleDoorLeaf), Hex(DoubleDoorLintel), Hex(DoubleDoorFrame)],
+                Placements = Place(
+                    ("Resting", [At(-0.95, 0, 0), At(0.95, 0, 0, Z(180)), At(0, 0, 0), At(0, 0, 0)]),
+                    ("Default", [At(-0.95, 0, 0, Z(-90)), At(0.95, 0, 0, Z(-90)), At(0, 0, 0), At(0, 0, 0)])),
+                Spheres = [new SphereSpec { Center = [0, 0, 0.02], Radius = 0.12 }],
+                Radius = 0.17,
+                Height = 0.24,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(CreatureSetup),
+                Comment = "creature: two CylSpheres, drawing-only parts (no BSP anywhere)",
+                Parts = [Hex(CreatureTorso), Hex(CreatureHead), Hex(CreatureLeg), Hex(CreatureLeg)],
+                Placements = Place(("Resting", [At(0, 0, 0), At(0, 0, 1.45), At(-0.12, 0, 0), At(0.12, 0, 0)])),
+                CylSpheres =
+                [
+                    new CylSphereSpec { Origin = [0, 0, 0], Radius = 0.35, Height = 1.8 },
+                    new CylSphereSpec { Origin = [0, 0.1, 1.45], Radius = 0.2, Height = 0.35 },
+                ],
+                Radius = 0.35,
+                Height = 1.8,
+                StepUpHeight = 0.6,
+                StepDownHeight = 0.6,
+                Flags = ["AllowFreeHeading"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(ItemSetup),
+                Comment = "item: Spheres only, one drawing-only part",
+                Parts = [Hex(ItemGem)],
+                Placements = Place(("Default", [At(0, 0, 0)])),
+                Spheres = [new SphereSpec { Center = [0, 0, 0.08], Radius = 0.1 }],
+                Radius = 0.1,
+                Height = 0.16,
+            },
+            new SetupSpec
+            {
+                Id = Hex(StaticSetup),
+                Comment = "multi-part static: 3 physics parts, rotated (about Z and about X), non-uniform DefaultScale; "
+                    + "flag HasPhysicsBsp NOT set although every part has a BSP",
+                Parts = [Hex(Pedestal), Hex(LBlock), Hex(Column)],
+                Placements = Place(("Resting", [At(0, 0, 0), At(-0.3, -0.3, 0.75, Z(45)), At(0.6, 0.2, 1.0, X(90))])),
+                DefaultScale = [[1, 1, 1.5], [0.8, 1.2, 1.5], [1, 1, 0.5]],
+                Radius = 1.2,
+                Height = 1.6,
+            },
+            new SetupSpec
+            {
+                Id = Hex(FlagWithoutBspSetup),
+                Comment = "flag HasPhysicsBsp set, but its only part is drawing-only (no part has a BSP); has a Sphere",
+                Parts = [Hex(ItemGem)],
+                Placements = Place(("Default", [At(0, 0, 0)])),
+                Spheres = [new SphereSpec { Center = [0, 0, 0.08], Radius = 0.1 }],
+                Radius = 0.1,
+                Height = 0.16,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(OtherOnlySetup),
+                Comment = "only placement is Other (neither Resting nor Default): retail gives its parts no placement frame",
+                Parts = [Hex(Pedestal), Hex(Column)],
+                Placements = Place(("Other", [At(0, 0, 0), At(0, 0, 0.5, Z(30))])),
+                Radius = 0.8,
+                Height = 2.5,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(NoPlacementSetup),
+                Comment = "single physics part, no placement frames at all: the part sits at the entity origin",
+                Parts = [Hex(LBlock)],
+                Radius = 0.8,
+                Height = 0.6,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(MissingPartSetup),
+                Comment = "part 0x0100DEAD is deliberately absent from the dat",
+                Parts = [Hex(Pedestal), Hex(MissingPart)],
+                Placements = Place(("Resting", [At(0, 0, 0), At(0, 0, 0.5)])),
+                Radius = 0.8,
+                Height = 1,
+                Flags = ["HasPhysicsBsp"],
+                MissingParts = [Hex(MissingPart)],
+            },
+            new SetupSpec
+            {
+                Id = Hex(BuildingSetup),
+                Comment = "building Setup around the house GfxObj (the landblock also places the GfxObj bare, as a building)",
+                Parts = [Hex(House)],
+                Placements = Place(("Default", [At(0, 0, 0)])),
+                Radius = 7.2,
+                Height = 5,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(OddSetup),
+                Comment = "holds the GfxObj with a degenerate and a non-planar polygon",
+                Parts = [Hex(OddGfxObj)],
+                Placements = Place(("Resting", [At(0, 0, 0)])),
+                Radius = 2,
+                Height = 3.2,
+                Flags = ["HasPhysicsBsp"],
+            },
+        ],
+        Landblocks =
+        [
+            new LandblockSpec
+            {
+                Id = Hex(Landblock),
+                Comment = "one landblock: the door, a bare GfxObj, the multi-part static (Stabs) and the house (a BuildingInfo), all turned about Z",
+                Objects =
+                [
+                    new StabSpec { Id = Hex(DoorSetup), Origin = [132, 103.9, 12], Orientation = Z(90) },
+                    new StabSpec { Id = Hex(Column), Origin = [30, 150, 10], Orientation = Z(120) },
+                    new StabSpec { Id = Hex(StaticSetup), Origin = [100, 30, 11], Orientation = Z(-45) },
+                ],
+                Buildings = [new BuildingSpec { ModelId = Hex(House), Origin = [132, 108, 12], Orientation = Z(90), NumLeaves = 4 }],
+            },
+        ],
+    };
+
+    private static string Hex(uint id) => $"0x{id:X8}";
+
+    private static IReadOnlyDictionary<string, IReadOnlyList<FrameSpec>?> Place(params (string Name, FrameSpec[] Frames)[] placements) =>
+        placements.ToDictionary(p => p.Name, p => (IReadOnlyList<FrameSpec>?)p.Frames);
+
+    private static FrameSpec At(double x, double y, double z, QuaternionSpec? q = null) =>
+        new() { Origin = [x, y, z], Orientation = q ?? new QuaternionSpec(1, 0, 0, 0) };
+
+    /// <summary>A rotation about Z; exact for multiples of 90 degrees (cos 90° in double is 6e-17, not 0).</summary>
+    public static QuaternionSpec Z(double degrees) => new(Half(degrees, cos: true), 0, 0, Half(degrees, cos: false));
+
+    public static QuaternionSpec X(double degrees) => new(Half(degrees, cos: true), Half(degrees, cos: false), 0, 0);
+
+    private static double Half(double degrees, bool cos)
+    {
+        var half = degrees / 2;
+        if (half % 45 == 0)
+        {
+            var steps = (int)(((half / 45) % 8 + 8) % 8); // 45° units
+            double[] c = [1, Math.Sqrt(0.5), 0, -Math.Sqrt(0.5), -1, -Math.Sqrt(0.5), 0, Math.Sqrt(0.5)];
+            return cos ? c[steps] : c[(steps + 6) % 8];
+        }
+        var rad = half * Math.PI / 180;
+        return cos ? Math.Cos(rad) : Math.Sin(rad);
+    }
+
+    private static MeshBuilder Gem()
+    {
+        Vector3 top = new(0, 0, 0.16f), bottom = new(0, 0, 0), mid = new(0, 0, 0.08f);
+        Vector3[] ring = [mid + new Vector3(0.06f, 0, 0), mid + new Vector3(0, 0.06f, 0), mid + new Vector3(-0.06f, 0, 0), mid + new Vector3(0, -0.06f, 0)];
+        var m = new MeshBuilder();
+        for (var i = 0; i < 4; i++)
+        {
+            m.Polygon([ring[i], ring[(i + 1) % 4], top]);
+            m.Polygon([ring[(i + 1) % 4], ring[i], bottom]);
+        }
+        return m;
+    }
+
+    private static MeshBuilder LShape()
+    {
+        // Profile counter-clockwise seen from above; (0, 0.4) splits the long left edge so the top and
+        // bottom can be two convex pieces without a T-junction (the block stays watertight).
+        Vector2[] profile = [new(0, 0), new(1, 0), new(1, 0.4f), new(0.4f, 0.4f), new(0.4f, 1), new(0, 1), new(0, 0.4f)];
+        const float h = 0.6f;
+        Vector3 B(Vector2 p) => new(p.X, p.Y, 0);
+        Vector3 T(Vector2 p) => new(p.X, p.Y, h);
+        var m = new MeshBuilder();
+        for (var i = 0; i < profile.Length; i++)
+        {
+            var a = profile[i];
+            var b = profile[(i + 1) % profile.Length];
+            m.Polygon([B(a), B(b), T(b), T(a)]);
+        }
+        int[] pieceA = [0, 1, 2, 3, 6], pieceB = [6, 3, 4, 5];
+        m.Polygon(pieceA.Select(i => T(profile[i])));
+        m.Polygon(pieceB.Select(i => T(profile[i])));
+        m.Polygon(pieceA.Reverse().Select(i => B(profile[i])));
+        m.Polygon(pieceB.Reverse().Select(i => B(profile[i])));
+        return m;
+    }
+
+    /// <summary>
+    /// 10 x 8 x 3 m walls on a 1 m grid (x in [-5, 5], y in [-4, 4]); a 2 x 2 m door opening in the front
+    /// wall (y = -4) and in an interior wall (x = 2); gable roof with its ridge along x at z = 5.
+    /// Walls are two-sided (sidesType None) so they stop movement from inside and out.
+    /// </summary>
+    private static MeshBuilder HouseMesh()
+    {
+        var m = new MeshBuilder();
+        static float X(int i) => -5 + i;
+        static float Y(int j) => -4 + j;
+        m.Grid((i, j) => new(X(i), Y(j), 0), 10, 8);                                              // floor, faces up
+        m.Grid((i, k) => new(X(i), -4, k), 10, 3, "None", (i, k) => i is 4 or 5 && k < 2);          // front, door opening
+        m.Grid((k, i) => new(X(i), 4, k), 3, 10, "None");                                         // back
+        m.Grid((j, k) => new(5, Y(j), k), 8, 3, "None");                                          // right end
+        m.Grid((k, j) => new(-5, Y(j), k), 3, 8, "None");                                         // left end
+        m.Grid((j, k) => new(2, Y(j), k), 8, 3, "None", (j, k) => j is 3 or 4 && k < 2);          // interior wall, doorway
+        m.Grid((i, j) => new(X(i), -4 + j, 3 + 0.5f * j), 10, 4);                                 // roof, front slope
+        m.Grid((i, j) => new(X(i), j, 5 - 0.5f * j), 10, 4);                                      // roof, back slope
+        m.Polygon([new(5, -4, 3), new(5, 4, 3), new(5, 0, 5)], "None");                           // gable ends
+        m.Polygon([new(-5, 4, 3), new(-5, -4, 3), new(-5, 0, 5)], "None");
+        return m;
+    }
+
+    private static MeshBuilder OddMesh()
+    {
+        var m = new MeshBuilder().Box(new(-1, -1, 0), new(1, 1, 2));
+        m.Polygon([new(-1, 0, 2.5f), new(0, 0, 2.5f), new(1, 0, 2.5f)]);                       // collinear: no plane
+        m.Polygon([new(-1, -1, 3), new(1, -1, 3), new(1, 1, 3.2f), new(-1, 1, 3)]);              // 0.2 m out of plane
+        return m;
+    }
+}

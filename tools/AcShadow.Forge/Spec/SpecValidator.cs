@@ -1,0 +1,268 @@
+using System.Globalization;
+using System.Numerics;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
+
+namespace AcShadow.Forge.Spec;
+
+/// <summary>
+/// Checks a <see cref="ForgeSpec"/> and converts it to dat objects. Stops at the first problem with a
+/// <see cref="SpecException"/> whose one line names the item (e.g. "setups[2] (0x02000010)") and says
+/// what to change: the forge exists to make exact test data, so anything ambiguous is refused.
+/// </summary>
+public static class SpecValidator
+{
+    /// <summary>How far a quaternion's length may stray from 1 (dat quaternions are unit).</summary>
+    public const double UnitTolerance = 1e-3;
+
+    /// <summary>Vertex ids are stored as int16, so a GfxObj holds at most this many vertices.</summary>
+    public const int MaxVertices = short.MaxValue + 1;
+
+    public static ValidSpec Validate(ForgeSpec spec)
+    {
+        if (spec.Iteration < 1) throw new SpecException($"iteration {spec.Iteration}: the dat iteration must be 1 or more");
+
+        var gfxObjs = new List<ForgeGfxObj>();
+        var gfxIds = new Dictionary<uint, int>();
+        var gfxList = spec.GfxObjs ?? [];
+        for (var i = 0; i < gfxList.Count; i++)
+        {
+            var g = gfxList[i] ?? throw new SpecException($"gfxObjs[{i}]: is null; expected an object with id, vertices, polygons");
+            var id = ParseId(g.Id, $"gfxObjs[{i}]", DatObjectKind.GfxObj);
+            var where = $"gfxObjs[{i}] (0x{id:X8})";
+            if (gfxIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by gfxObjs[{first}]; give each gfxObj its own id");
+            gfxIds[id] = i;
+            gfxObjs.Add(ValidateGfxObj(g, id, where));
+        }
+
+        var setups = new List<Setup>();
+        var setupIds = new Dictionary<uint, int>();
+        var setupList = spec.Setups ?? [];
+        for (var i = 0; i < setupList.Count; i++)
+        {
+            var s = setupList[i] ?? throw new SpecException($"setups[{i}]: is null; expected an object with id and parts");
+            var id = ParseId(s.Id, $"setups[{i}]", DatObjectKind.Setup);
+            var where = $"setups[{i}] (0x{id:X8})";
+            if (setupIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by setups[{first}]; give each setup its own id");
+            setupIds[id] = i;
+            setups.Add(ValidateSetup(s, id, where, gfxIds));
+        }
+
+        var landblocks = new List<LandBlockInfo>();
+        var landblockIds = new Dictionary<uint, int>();
+        var landblockList = spec.Landblocks ?? [];
+        for (var i = 0; i < landblockList.Count; i++)
+        {
+            var l = landblockList[i] ?? throw new SpecException($"landblocks[{i}]: is null; expected an object with id, objects, buildings");
+            var id = ParseId(l.Id, $"landblocks[{i}]", DatObjectKind.LandBlockInfo);
+            var where = $"landblocks[{i}] (0x{id:X8})";
+            if (landblockIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by landblocks[{first}]; give each landblock its own id");
+            landblockIds[id] = i;
+            landblocks.Add(ValidateLandblock(l, id, where, gfxIds, setupIds));
+        }
+
+        return new ValidSpec(spec.Iteration, gfxObjs, setups, landblocks);
+    }
+
+    private static ForgeGfxObj ValidateGfxObj(GfxObjSpec g, uint id, string where)
+    {
+        var vertexSpecs = g.Vertices ?? [];
+        if (vertexSpecs.Count > MaxVertices) throw new SpecException($"{where}: {vertexSpecs.Count} vertices; vertex ids are int16, so at most {MaxVertices}");
+        var vertices = new Vector3[vertexSpecs.Count];
+        for (var v = 0; v < vertices.Length; v++) vertices[v] = Vector(vertexSpecs[v], $"{where} vertices[{v}]");
+
+        var polygonSpecs = g.Polygons ?? [];
+        if (polygonSpecs.Count > ushort.MaxValue + 1) throw new SpecException($"{where}: {polygonSpecs.Count} polygons; polygon ids are uint16, so at most {ushort.MaxValue + 1}");
+        if (!g.Physics && !g.Drawing && polygonSpecs.Count > 0)
+            throw new SpecException($"{where}: has polygons but neither physics nor drawing is true; set one (physics: collision polygons + BSP, drawing: drawing polygons)");
+        if (g.Physics && polygonSpecs.Count == 0)
+            throw new SpecException($"{where}: physics is true but there are no polygons; a PhysicsBSP needs at least one polygon");
+
+        var polygons = new Polygon[polygonSpecs.Count];
+        for (var p = 0; p < polygons.Length; p++)
+        {
+            var ps = polygonSpecs[p] ?? throw new SpecException($"{where} polygons[{p}]: is null; expected {{\"vertices\": [0, 1, 2]}}");
+            var ids = ps.Vertices ?? [];
+            if (ids.Count < 3) throw new SpecException($"{where} polygons[{p}]: has {ids.Count} vertex id(s); a polygon needs at least 3");
+            if (ids.Count > byte.MaxValue) throw new SpecException($"{where} polygons[{p}]: has {ids.Count} vertex ids; a polygon holds at most 255");
+            foreach (var v in ids)
+                if (v < 0 || v >= vertices.Length)
+                    throw new SpecException(vertices.Length == 0
+                        ? $"{where} polygons[{p}]: vertex id {v} is out of range; this gfxObj has no vertices"
+                        : $"{where} polygons[{p}]: vertex id {v} is out of range; valid ids are 0-{vertices.Length - 1}");
+            var sides = ParseEnum(ps.SidesType, SidesType.Landblock, $"{where} polygons[{p}] sidesType");
+            var stippling = ParseEnum(ps.Stippling, Stippling.None, $"{where} polygons[{p}] stippling");
+            polygons[p] = new Polygon(stippling, sides, 0, 0, ids.Select(v => (short)v).ToArray(), [], []);
+        }
+        return new ForgeGfxObj(id, vertices, polygons, g.Physics, g.Drawing);
+    }
+
+    private static Setup ValidateSetup(SetupSpec s, uint id, string where, Dictionary<uint, int> gfxIds)
+    {
+        var missing = new HashSet<uint>();
+        foreach (var text in s.MissingParts ?? [])
+        {
+            var part = ParseId(text, $"{where} missingParts", DatObjectKind.GfxObj);
+            if (gfxIds.ContainsKey(part)) throw new SpecException($"{where}: missingParts lists 0x{part:X8}, but gfxObjs declares it; remove it from one of them");
+            missing.Add(part);
+        }
+
+        var partSpecs = s.Parts ?? [];
+        if (partSpecs.Count == 0) throw new SpecException($"{where}: has no parts; a Setup needs at least one part id");
+        var parts = new uint[partSpecs.Count];
+        for (var i = 0; i < parts.Length; i++)
+        {
+            parts[i] = ParseId(partSpecs[i], $"{where} parts[{i}]", DatObjectKind.GfxObj);
+            if (!gfxIds.ContainsKey(parts[i]) && !missing.Contains(parts[i]))
+                throw new SpecException($"{where}: part 0x{parts[i]:X8} is not a gfxObj in this spec (declare it, or list it in missingParts)");
+        }
+        foreach (var m in missing.Where(m => !parts.Contains(m)))
+            throw new SpecException($"{where}: missingParts lists 0x{m:X8}, which is not one of its parts; remove it");
+
+        var placements = new List<PlacementFrame>();
+        foreach (var (name, frameSpecs) in s.Placements ?? new Dictionary<string, IReadOnlyList<FrameSpec>?>())
+        {
+            if (!Placement.TryParse(name, out var key))
+                throw new SpecException($"{where}: unknown placement name \"{name}\" (use a retail name such as Resting, Default, Other, or Placement0xNN)");
+            if (placements.Any(p => p.Placement == key))
+                throw new SpecException($"{where}: placement \"{name}\" is given twice (as {Placement.Name(key)}); keep one");
+            var frames = frameSpecs ?? [];
+            if (frames.Count != parts.Length)
+                throw new SpecException($"{where}: placement \"{name}\" has {frames.Count} frame(s) but the setup has {parts.Length} part(s); the dat stores exactly one frame per part, so give {parts.Length}");
+            placements.Add(new PlacementFrame(key, frames.Select((f, i) => Frame(f, $"{where} placement \"{name}\" frame {i}")).ToArray()));
+        }
+
+        var cyls = (s.CylSpheres ?? []).Select((c, i) =>
+        {
+            var at = $"{where} cylSpheres[{i}]";
+            if (c is null) throw new SpecException($"{at}: is null; expected {{origin, radius, height}}");
+            return new CylSphere(Vector(c.Origin ?? [0, 0, 0], $"{at} origin"), NonNegative(c.Radius, $"{at} radius"), NonNegative(c.Height, $"{at} height"));
+        }).ToArray();
+        var spheres = (s.Spheres ?? []).Select((c, i) => Sphere(c, $"{where} spheres[{i}]")).ToArray();
+
+        Vector3[] scales = [];
+        if (s.DefaultScale is { } scaleSpecs)
+        {
+            if (scaleSpecs.Count != parts.Length)
+                throw new SpecException($"{where}: defaultScale has {scaleSpecs.Count} entries but the setup has {parts.Length} part(s); the dat stores exactly one scale per part");
+            scales = scaleSpecs.Select((v, i) => Vector(v, $"{where} defaultScale[{i}]")).ToArray();
+        }
+
+        var flags = SetupFlags.None;
+        foreach (var name in s.Flags ?? [])
+        {
+            if (string.IsNullOrEmpty(name) || char.IsDigit(name[0]) || name[0] == '-' || !Enum.TryParse<SetupFlags>(name, ignoreCase: true, out var flag) || !Enum.IsDefined(flag) || flag == SetupFlags.None)
+                throw new SpecException($"{where}: unknown flag \"{name}\" (use {string.Join(", ", SettableFlags)})");
+            if (flag is SetupFlags.HasDefaultScale or SetupFlags.HasParent)
+                throw new SpecException($"{where}: flag {flag} is derived (from defaultScale / parent indices); remove it from flags");
+            flags |= flag;
+        }
+        if (scales.Length > 0) flags |= SetupFlags.HasDefaultScale;
+
+        return new Setup(
+            id, flags, parts, [], scales, placements, cyls, spheres,
+            Finite(s.Height, $"{where} height"), NonNegative(s.Radius, $"{where} radius"),
+            Finite(s.StepUpHeight, $"{where} stepUpHeight"), Finite(s.StepDownHeight, $"{where} stepDownHeight"),
+            s.SortingSphere is null ? default : Sphere(s.SortingSphere, $"{where} sortingSphere"),
+            s.SelectionSphere is null ? default : Sphere(s.SelectionSphere, $"{where} selectionSphere"));
+    }
+
+    private static readonly string[] SettableFlags = [nameof(SetupFlags.AllowFreeHeading), nameof(SetupFlags.HasPhysicsBsp)];
+
+    private static LandBlockInfo ValidateLandblock(LandblockSpec l, uint id, string where, Dictionary<uint, int> gfxIds, Dictionary<uint, int> setupIds)
+    {
+        if (l.NumCells < 0) throw new SpecException($"{where}: numCells {l.NumCells} is negative");
+        var objects = (l.Objects ?? []).Select((o, i) =>
+        {
+            var at = $"{where} objects[{i}]";
+            if (o is null) throw new SpecException($"{at}: is null; expected {{id, origin, orientation}}");
+            var model = ModelId(o.Id, at, gfxIds, setupIds);
+            return new Stab(model, new Frame(Vector(o.Origin ?? [0, 0, 0], $"{at} origin"), Orientation(o.Orientation, $"{at} orientation")));
+        }).ToArray();
+        var buildings = (l.Buildings ?? []).Select((b, i) =>
+        {
+            var at = $"{where} buildings[{i}]";
+            if (b is null) throw new SpecException($"{at}: is null; expected {{modelId, origin, orientation, numLeaves}}");
+            var model = ModelId(b.ModelId, at, gfxIds, setupIds);
+            if (b.NumLeaves < 0) throw new SpecException($"{at}: numLeaves {b.NumLeaves} is negative");
+            return new BuildingInfo(model, new Frame(Vector(b.Origin ?? [0, 0, 0], $"{at} origin"), Orientation(b.Orientation, $"{at} orientation")), (uint)b.NumLeaves, []);
+        }).ToArray();
+        return new LandBlockInfo(id, (uint)l.NumCells, objects, buildings, []);
+    }
+
+    private static uint ModelId(string? text, string at, Dictionary<uint, int> gfxIds, Dictionary<uint, int> setupIds)
+    {
+        var id = ParseHex(text, at);
+        if (!gfxIds.ContainsKey(id) && !setupIds.ContainsKey(id))
+            throw new SpecException($"{at}: 0x{id:X8} is neither a gfxObj nor a setup in this spec; declare it or place another id");
+        return id;
+    }
+
+    private static uint ParseId(string? text, string at, DatObjectKind kind)
+    {
+        var id = ParseHex(text, at);
+        if (!kind.Contains(id)) throw new SpecException($"{at}: id 0x{id:X8} is outside the {kind} range {kind.RangeText()}");
+        return id;
+    }
+
+    private static uint ParseHex(string? text, string at)
+    {
+        if (text is null) throw new SpecException($"{at}: id is missing; write it as a hex string like \"0x010044B5\"");
+        var digits = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) ? text[2..] : null;
+        if (digits is null || digits.Length is 0 or > 8 || !uint.TryParse(digits, NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out var id))
+            throw new SpecException($"{at}: id \"{text}\" is not a hex id like \"0x010044B5\"");
+        return id;
+    }
+
+    private static T ParseEnum<T>(string? text, T fallback, string at) where T : struct, Enum
+    {
+        if (text is null) return fallback;
+        // Names only: a number would bypass the meaning the name documents.
+        if (text.Length == 0 || char.IsDigit(text[0]) || text[0] == '-' || !Enum.TryParse<T>(text, ignoreCase: true, out var value))
+            throw new SpecException($"{at}: \"{text}\" is not one of {string.Join(", ", Enum.GetNames<T>())}");
+        return value;
+    }
+
+    private static Sphere Sphere(SphereSpec? s, string at)
+    {
+        if (s is null) throw new SpecException($"{at}: is null; expected {{center, radius}}");
+        return new Sphere(Vector(s.Center ?? [0, 0, 0], $"{at} center"), NonNegative(s.Radius, $"{at} radius"));
+    }
+
+    private static Frame Frame(FrameSpec? f, string at)
+    {
+        if (f is null) throw new SpecException($"{at}: is null; expected {{origin, orientation}}");
+        return new Frame(Vector(f.Origin ?? [0, 0, 0], $"{at} origin"), Orientation(f.Orientation, $"{at} orientation"));
+    }
+
+    private static Quaternion Orientation(QuaternionSpec? q, string at)
+    {
+        if (q is null) return Quaternion.Identity;
+        var result = new Quaternion(Finite(q.X, $"{at} x"), Finite(q.Y, $"{at} y"), Finite(q.Z, $"{at} z"), Finite(q.W, $"{at} w"));
+        var length = Math.Sqrt(q.W * q.W + q.X * q.X + q.Y * q.Y + q.Z * q.Z);
+        if (Math.Abs(length - 1) > UnitTolerance)
+            throw new SpecException($"{at}: quaternion length is {length.ToString("0.######", CultureInfo.InvariantCulture)}, not 1; normalize it");
+        return result;
+    }
+
+    private static Vector3 Vector(double[]? v, string at)
+    {
+        if (v is null || v.Length != 3) throw new SpecException($"{at}: expected [x, y, z], got {(v is null ? "null" : $"{v.Length} number(s)")}");
+        return new Vector3(Finite(v[0], $"{at} x"), Finite(v[1], $"{at} y"), Finite(v[2], $"{at} z"));
+    }
+
+    private static float NonNegative(double value, string at)
+    {
+        var f = Finite(value, at);
+        if (f < 0) throw new SpecException($"{at}: {f.ToString(CultureInfo.InvariantCulture)} is negative; it must be 0 or more");
+        return f;
+    }
+
+    private static float Finite(double value, string at)
+    {
+        var f = (float)value;
+        if (!float.IsFinite(f))
+            throw new SpecException($"{at}: {value.ToString(CultureInfo.InvariantCulture)} is not a finite float32 number");
+        return f;
+    }
+}
