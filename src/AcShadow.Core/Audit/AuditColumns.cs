@@ -1,0 +1,37 @@
+using AcShadow.Core.Json;
+
+namespace AcShadow.Core.Audit;
+
+/// <summary>
+/// The audit's columns, in output order. A later column (e.g. the cheapest exact model from the
+/// collision chart) is one more entry here; every format picks it up.
+/// </summary>
+public static class AuditColumns
+{
+    public static readonly IReadOnlyList<AuditColumn> All =
+    [
+        new("id", "Setup", r => JsonIds.Format(r.SetupId), "Setup id"),
+        new("category", "Family", r => r.Category.Name(), "the shape family retail tests: bsp, cylinders, spheres or none"),
+        new("parts", "Parts", r => r.Parts, "number of parts"),
+        new("bspParts", "BSP parts", r => r.BspParts, "parts whose GfxObj has a PhysicsBSP"),
+        new("missingParts", "Missing", r => r.MissingParts, "parts whose GfxObj is not in the dat or unreadable"),
+        new("cylSpheres", "Cyls", r => r.CylSpheres, "CylSpheres"),
+        new("spheres", "Spheres", r => r.Spheres, "Spheres"),
+        new("radius", "Radius", r => r.Radius, "Setup.Radius"),
+        new("height", "Height", r => r.Height, "Setup.Height"),
+        new("flagBsp", "Flag BSP", r => r.FlagHasPhysicsBsp, "Setup.Flags HasPhysicsBSP (0x8)"),
+        new("partsBsp", "Parts BSP", r => r.PartsHavePhysicsBsp, "a part has a PhysicsBSP (what retail computes)"),
+        new("flagMismatch", "Mismatch", r => r.FlagMismatch, "the flag disagrees with the parts"),
+        new("retailShapes", "Retail", r => r.RetailShapes, "shapes under --policy retail"),
+        new("unionShapes", "Union", r => r.UnionShapes, "shapes under --policy union"),
+        new("polygons", "Polygons", r => r.PhysicsPolygons, "physics polygons of the retail BSP shapes (per part, shared GfxObjs counted per part)"),
+        new("placement", "Placement", r => r.Placement, "placement retail uses (Resting, Default or None)"),
+        new("unionPlacement", "Union placement", r => r.UnionPlacement, "placement the union policy uses"),
+        new("coverage", "Coverage", r => r.Coverage, "fraction of the BSP footprint inside the Radius circle (docs/batch.md)"),
+        new("footprint", "Footprint m2", r => r.FootprintArea, "area of the BSP footprint, m²"),
+        new("diagnostics", "Diagnostics", r => r.DiagnosticCodes, "diagnostic codes of the retail build"),
+    ];
+
+    public static AuditColumn? Find(string key) =>
+        All.FirstOrDefault(c => string.Equals(c.Key, key, StringComparison.OrdinalIgnoreCase));
+}

@@ -1,0 +1,31 @@
+namespace AcShadow.Core.Audit;
+
+/// <summary>
+/// One Setup's audit: its parts and which carry a PhysicsBSP, its CylSpheres and Spheres, the
+/// Radius×Height fallback, the HasPhysicsBSP flag against what the parts say, the shapes each policy
+/// builds, the physics polygons retail tests, the placement used, and how much of the BSP footprint the
+/// fallback cylinder covers (<see cref="FootprintCoverage"/>; null when there is no BSP footprint).
+/// </summary>
+public sealed record AuditRow(
+    uint SetupId,
+    int Parts,
+    int BspParts,
+    int MissingParts,
+    int CylSpheres,
+    int Spheres,
+    float Radius,
+    float Height,
+    bool FlagHasPhysicsBsp,
+    bool PartsHavePhysicsBsp,
+    int RetailShapes,
+    int UnionShapes,
+    int PhysicsPolygons,
+    string Placement,
+    string UnionPlacement,
+    double? Coverage,
+    double? FootprintArea,
+    AuditCategory Category,
+    IReadOnlyList<string> DiagnosticCodes)
+{
+    public bool FlagMismatch => FlagHasPhysicsBsp != PartsHavePhysicsBsp;
+}

@@ -1,0 +1,36 @@
+using AcShadow.Core.Dat;
+
+namespace AcShadow.Core.Verify;
+
+/// <summary>Compares regenerated files with the files of a fixtures folder, both as path → bytes.</summary>
+public static class FixtureComparer
+{
+    public static FixtureComparison Compare(IReadOnlyDictionary<string, byte[]> expected, IReadOnlyDictionary<string, byte[]> actual,
+        IReadOnlyList<string> datDifferences)
+    {
+        var missing = expected.Keys.Where(p => !actual.ContainsKey(p)).Order(StringComparer.Ordinal).ToArray();
+        var extra = actual.Keys.Where(p => !expected.ContainsKey(p)).Order(StringComparer.Ordinal).ToArray();
+        var changed = new List<ChangedFile>();
+        foreach (var path in expected.Keys.Where(actual.ContainsKey).Order(StringComparer.Ordinal))
+        {
+            var old = actual[path];
+            var fresh = expected[path];
+            if (old.AsSpan().SequenceEqual(fresh)) continue;
+            changed.Add(new ChangedFile(path, JsonDiff.Compare(old, fresh)));
+        }
+        return new FixtureComparison(missing, extra, changed, datDifferences, expected.Count);
+    }
+
+    /// <summary>What differs between the dat index.json recorded and the dat at hand: name, size, iteration.</summary>
+    public static IReadOnlyList<string> DatDifferences(string label, DatSourceInfo? recorded, DatSourceInfo? current)
+    {
+        if (recorded is null && current is null) return [];
+        if (recorded is null || current is null)
+            return [$"{label}: index.json records {(recorded is null ? "none" : recorded.FileName)}, this run has {(current is null ? "none" : current.FileName)}"];
+        var differences = new List<string>();
+        if (recorded.FileName != current.FileName) differences.Add($"{label} file name: {recorded.FileName} → {current.FileName}");
+        if (recorded.Size != current.Size) differences.Add($"{label} size: {recorded.Size} → {current.Size} bytes");
+        if (recorded.Iteration != current.Iteration) differences.Add($"{label} iteration: {recorded.Iteration} → {current.Iteration}");
+        return differences;
+    }
+}
