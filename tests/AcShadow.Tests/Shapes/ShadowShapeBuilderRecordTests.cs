@@ -17,7 +17,7 @@ public class ShadowShapeBuilderRecordTests
     {
         // Retail poses min(NumParts, frames) parts (CPartArray::UpdateParts). A dat always stores one
         // frame per part, so this case only arises from in-memory data.
-        var setup = Setup(0x02000001, [A.Id, B.Id, A.Id], [Placement(Placement.Resting, new(1, 0, 0), new(2, 0, 0))]);
+        var setup = Setup(0x02000001, [A.Id, B.Id, A.Id], [PlacementAt(Placement.Resting, new(1, 0, 0), new(2, 0, 0))]);
         var set = ShadowShapeBuilder.Build(setup, Lookup(A, B), new(ShapePolicy.Retail));
         Assert.Equal([0, 1], set.Shapes.Select(s => s.SourceIndex));
         Assert.Contains(set.Diagnostics, d => d.Code == DiagnosticCodes.NoPose && d.Message.Contains("part 2"));
@@ -26,7 +26,7 @@ public class ShadowShapeBuilderRecordTests
     [Fact]
     public void Union_puts_parts_beyond_a_short_frame_at_the_origin()
     {
-        var setup = Setup(0x02000001, [A.Id, B.Id, A.Id], [Placement(Placement.Resting, new(1, 0, 0), new(2, 0, 0))]);
+        var setup = Setup(0x02000001, [A.Id, B.Id, A.Id], [PlacementAt(Placement.Resting, new(1, 0, 0), new(2, 0, 0))]);
         var set = ShadowShapeBuilder.Build(setup, Lookup(A, B), new(ShapePolicy.Union));
         Assert.Equal(3, set.Shapes.Count);
         Assert.Equal(Vector3.Zero, set.Shapes[2].LocalPosition);
@@ -38,9 +38,9 @@ public class ShadowShapeBuilderRecordTests
     public void Retail_prefers_resting_then_default(bool resting, bool @default, string used, float x)
     {
         var placements = new List<PlacementFrame>();
-        if (@default) placements.Add(Placement(Placement.Default, new Vector3(2, 0, 0)));
-        if (resting) placements.Add(Placement(Placement.Resting, new Vector3(1, 0, 0)));
-        placements.Add(Placement(0x66, new Vector3(3, 0, 0)));
+        if (@default) placements.Add(PlacementAt(Placement.Default, new Vector3(2, 0, 0)));
+        if (resting) placements.Add(PlacementAt(Placement.Resting, new Vector3(1, 0, 0)));
+        placements.Add(PlacementAt(0x66, new Vector3(3, 0, 0)));
         var set = ShadowShapeBuilder.Build(Setup(0x02000002, [A.Id], placements.ToArray()), Lookup(A), new(ShapePolicy.Retail));
         Assert.Equal(used, set.Placement.Used);
         Assert.Equal("Resting", set.Placement.Requested);
@@ -50,7 +50,7 @@ public class ShadowShapeBuilderRecordTests
     [Fact]
     public void Retail_never_falls_back_to_another_placement_but_union_does()
     {
-        var setup = Setup(0x02000003, [A.Id, B.Id], [Placement(0x66, new(3, 0, 0), new(4, 0, 0))]);
+        var setup = Setup(0x02000003, [A.Id, B.Id], [PlacementAt(0x66, new(3, 0, 0), new(4, 0, 0))]);
         var retail = ShadowShapeBuilder.Build(setup, Lookup(A, B), new(ShapePolicy.Retail));
         Assert.Equal("None", retail.Placement.Used);
         Assert.Empty(retail.Shapes);
@@ -72,7 +72,7 @@ public class ShadowShapeBuilderRecordTests
     [Fact]
     public void Default_scale_z_and_entity_scale_multiply_radius_but_only_entity_scale_moves_the_part()
     {
-        var setup = Setup(0x02000005, [A.Id, B.Id], [Placement(Placement.Resting, new(1, 0, 0), new(0, 2, 0))],
+        var setup = Setup(0x02000005, [A.Id, B.Id], [PlacementAt(Placement.Resting, new(1, 0, 0), new(0, 2, 0))],
             defaultScale: [new(2, 2, 3), new(1, 1, 1)]);
         var set = ShadowShapeBuilder.Build(setup, Lookup(A, B), new(ShapePolicy.Retail, 2f));
         Assert.Equal(new Vector3(2, 0, 0), set.Shapes[0].LocalPosition);
@@ -116,7 +116,7 @@ public class ShadowShapeBuilderRecordTests
     [Fact]
     public void Missing_gfxobj_and_flag_mismatch_are_diagnosed_not_fatal()
     {
-        var setup = Setup(0x02000009, [A.Id, 0x0100BEEF], [Placement(Placement.Default, Vector3.Zero, Vector3.One)]);
+        var setup = Setup(0x02000009, [A.Id, 0x0100BEEF], [PlacementAt(Placement.Default, Vector3.Zero, Vector3.One)]);
         var set = ShadowShapeBuilder.Build(setup, Lookup(A), new(ShapePolicy.Retail));
         Assert.Single(set.Shapes);
         Assert.Contains(set.Diagnostics, d => d.Code == DiagnosticCodes.MissingGfxObj && d.Message.Contains("0x0100BEEF"));

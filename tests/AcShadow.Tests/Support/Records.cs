@@ -30,7 +30,7 @@ public static class Records
         float height = 1f) =>
         new(id, flags, parts, [], defaultScale ?? [], placements ?? [], cyls ?? [], spheres ?? [], height, radius, 0, 0, default, default);
 
-    public static PlacementFrame Placement(uint key, params Vector3[] origins) =>
+    public static PlacementFrame PlacementAt(uint key, params Vector3[] origins) =>
         new(key, origins.Select(o => new Frame(o, Quaternion.Identity)).ToArray());
 
     public static Func<uint, GfxObj?> Lookup(params GfxObj[] objects) => id => objects.FirstOrDefault(o => o.Id == id);
