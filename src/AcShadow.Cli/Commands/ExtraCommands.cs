@@ -7,6 +7,8 @@ public static class ExtraCommands
 {
     public static IEnumerable<Command> All(CliConsole console)
     {
-        yield break;
+        yield return BatchCommand.Create(console);
+        yield return AuditCommand.Create(console);
+        yield return VerifyCommand.Create(console);
     }
 }

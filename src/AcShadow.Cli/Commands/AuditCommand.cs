@@ -1,0 +1,85 @@
+using System.CommandLine;
+using System.Globalization;
+using System.Text;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Core.Audit;
+
+namespace AcShadow.Cli.Commands;
+
+/// <summary>
+/// `acshadow audit [selection]`: one row per Setup saying which shape family retail uses, whether the
+/// HasPhysicsBSP flag agrees with the parts, and how badly the Radius×Height fallback covers a BSP
+/// footprint. Default selection: every Setup in the dat.
+/// </summary>
+public static class AuditCommand
+{
+    public static Command Create(CliConsole console)
+    {
+        var selection = new SelectionOptions();
+        var dat = CommonOptions.Dat();
+        var format = new Option<string?>("--format") { Description = "table (default on stdout), csv, json or md (default for --out: from its extension)", HelpName = "table|csv|json|md" };
+        var outFile = new Option<string?>("--out") { Description = "write the report to FILE instead of stdout", HelpName = "FILE" };
+        var onlyBsp = new Option<bool>("--only-bsp") { Description = "only Setups with a BSP-bearing part" };
+        var flagMismatch = new Option<bool>("--flag-mismatch") { Description = "only Setups whose HasPhysicsBSP flag disagrees with their parts" };
+        var maxCoverage = new Option<string?>("--max-coverage") { Description = "only Setups whose fallback cylinder covers at most X (0..1) of the BSP footprint", HelpName = "X" };
+        var sort = new Option<string?>("--sort") { Description = $"sort by a column ({string.Join(", ", AuditColumns.All.Select(c => c.Key))}); prefix - for descending", HelpName = "FIELD" };
+        var jobs = SelectionOptions.Jobs();
+        var command = new Command("audit", "Which Setups have BSP-bearing parts, and where a simpler shape model lies")
+        {
+            dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
+            format, outFile, onlyBsp, flagMismatch, maxCoverage, sort, jobs,
+        };
+        command.SetAction(parse =>
+        {
+            var query = new AuditQuery(parse.GetValue(onlyBsp), parse.GetValue(flagMismatch),
+                ParseCoverage(parse.GetValue(maxCoverage)), ParseSort(parse.GetValue(sort)));
+            var output = parse.GetValue(outFile);
+            return Run(console, selection.Parse(parse, defaultToAll: true), parse.GetValue(dat), parse.GetValue(selection.CellDat),
+                query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)));
+        });
+        return command;
+    }
+
+    private static int Run(CliConsole console, Core.Batch.BatchSelection selection, string? datPath, string? cellPath,
+        AuditQuery query, AuditFormat format, string? output, int jobs)
+    {
+        if (output is not null && Directory.Exists(output))
+            throw new CliException(ExitCodes.OutputFailed, $"--out: {output} is a folder: pass a file name, e.g. audit.csv");
+        using var dat = DatLocator.Open(datPath, cellPath, console);
+        var plan = SelectionOptions.Plan(selection, dat);
+        var report = AuditRunner.Run(dat.Portal, plan, query, jobs);
+        var text = AuditWriter.Write(report, format, dat.Portal.Info, selection);
+        if (output is null)
+        {
+            console.Out.Write(text);
+            if (format == AuditFormat.Csv) console.Error.Write(AuditWriter.SummaryText(report));
+            return ExitCodes.Ok;
+        }
+        var full = Path.GetFullPath(output);
+        OutputFolder.WriteAtomically(Path.GetDirectoryName(full)!, Path.GetFileName(full), new UTF8Encoding(false).GetBytes(text));
+        console.Out.Write(AuditWriter.SummaryText(report));
+        console.Out.WriteLine($"wrote {output} ({format.ToString().ToLowerInvariant()}, {report.Rows.Count} row(s))");
+        return ExitCodes.Ok;
+    }
+
+    private static AuditFormat ParseFormat(string? text, string? output)
+    {
+        if (text is null) return output is null ? AuditFormat.Table : AuditFormats.FromExtension(output) ?? AuditFormat.Table;
+        if (AuditFormats.TryParse(text, out var format)) return format;
+        throw new CliException(ExitCodes.Usage, $"--format: '{text}' is not a format: use table, csv, json or md");
+    }
+
+    private static double? ParseCoverage(string? text)
+    {
+        if (text is null) return null;
+        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var x) && x is >= 0 and <= 1) return x;
+        throw new CliException(ExitCodes.Usage, $"--max-coverage: '{text}' is not a fraction: use a number from 0 to 1, e.g. 0.1");
+    }
+
+    private static string ParseSort(string? text)
+    {
+        if (text is null) return "id";
+        if (AuditColumns.Find(text.TrimStart('-', '+')) is not null) return text;
+        throw new CliException(ExitCodes.Usage, $"--sort: '{text}' is not a column: use one of {string.Join(", ", AuditColumns.All.Select(c => c.Key))} (prefix - for descending)");
+    }
+}

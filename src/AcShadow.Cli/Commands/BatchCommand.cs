@@ -1,0 +1,174 @@
+using System.CommandLine;
+using System.Diagnostics;
+using System.Globalization;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Terminal;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Catalog;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
+using AcShadow.Core.Json;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Cli.Commands;
+
+/// <summary>
+/// `acshadow batch --out DIR [selection]`: many Setups (and a landblock's scene) through the one export
+/// engine, in parallel, written atomically with index.json; skipped ids are reported, never fatal.
+/// </summary>
+public static class BatchCommand
+{
+    public static Command Create(CliConsole console)
+    {
+        var selection = new SelectionOptions();
+        var dat = CommonOptions.Dat();
+        var outDir = new Option<string>("--out") { Description = "output folder", HelpName = "DIR", Required = true };
+        var policy = CommonOptions.Policy();
+        var scale = CommonOptions.Scale();
+        var jobs = SelectionOptions.Jobs();
+        var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
+        var incremental = new Option<bool>("--incremental") { Description = "leave files whose content would not change untouched" };
+        var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
+        {
+            outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
+            policy, scale, jobs, quiet, incremental,
+        };
+        command.SetAction(parse => Run(console,
+            selection.Parse(parse, defaultToAll: false),
+            parse.GetValue(dat),
+            parse.GetValue(selection.CellDat),
+            parse.GetValue(outDir)!,
+            new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))),
+            SelectionOptions.ParseJobs(parse.GetValue(jobs)),
+            parse.GetValue(quiet),
+            parse.GetValue(incremental)));
+        return command;
+    }
+
+    private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
+        ShapeBuildOptions options, int jobs, bool quiet, bool incremental)
+    {
+        var clock = Stopwatch.StartNew();
+        if (File.Exists(outDir))
+            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        using var dat = DatLocator.Open(datPath, cellPath, console);
+        var plan = SelectionOptions.Plan(selection, dat);
+        var engine = new ExportEngine(dat.Portal, options);
+        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection);
+
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet, "setups");
+        BatchResult result;
+        try
+        {
+            result = BatchRunner.Run(engine, plan, inputs, jobs, progress.Report);
+        }
+        finally
+        {
+            progress.Finish();
+        }
+
+        long written = 0;
+        int filesWritten = 0, unchanged = 0;
+        foreach (var (path, content) in result.AllFiles)
+        {
+            if (incremental && OutputFolder.IsUnchanged(outDir, path, content)) { unchanged++; continue; }
+            written += OutputFolder.WriteAtomically(outDir, path, content);
+            filesWritten++;
+        }
+
+        var o = console.Out;
+        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, scale {options.EntityScale}): " +
+            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s)"));
+        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  files: {filesWritten} written ({written} bytes){(incremental ? $", {unchanged} unchanged and left alone" : "")}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
+        foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
+            o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
+        if (result.Diagnostics.Count > 0)
+            o.WriteLine($"  diagnostics: {result.Diagnostics.Count} in {result.Diagnostics.Select(d => d.Id).Distinct().Count()} setup(s) (listed in each file's \"diagnostics\")");
+        o.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  wall time {clock.Elapsed.TotalSeconds:0.000} s with {jobs} job(s)"));
+        return ExitCodes.Ok;
+    }
+}
+
+/// <summary>
+/// The selection options batch and audit share (--doors, --all, --setups, --landblock, --cell-dat) and
+/// --jobs, spelled once, with their parsing into a <see cref="BatchSelection"/> and a plan.
+/// </summary>
+public sealed class SelectionOptions
+{
+    public Option<bool> Doors { get; } = new("--doors") { Description = "every Setup of the built-in door catalog (ACE world database door weenies)" };
+    public Option<bool> All { get; } = new("--all") { Description = "every Setup in the dat" };
+    public Option<string?> Setups { get; } = new("--setups") { Description = "a file of Setup ids, one a line, '#' comments", HelpName = "FILE" };
+    public Option<string?> Landblock { get; } = new("--landblock") { Description = "a landblock's scene (needs --cell-dat unless the sample is used)", HelpName = "0xXXYY" };
+    public Option<string?> CellDat { get; } = new("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --landblock", HelpName = "PATH" };
+
+    public static Option<string?> Jobs() => new("--jobs") { Description = "parallel workers (default: all cores)", HelpName = "N" };
+
+    public static int ParseJobs(string? text)
+    {
+        if (text is null) return Environment.ProcessorCount;
+        if (int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out var n) && n is >= 1 and <= 1024) return n;
+        throw new CliException(ExitCodes.Usage, $"--jobs: '{text}' is not a worker count: use a whole number from 1 to 1024");
+    }
+
+    /// <summary>The selection; with nothing chosen, --all when <paramref name="defaultToAll"/>, else a usage error.</summary>
+    public BatchSelection Parse(ParseResult parse, bool defaultToAll)
+    {
+        SetupList? list = null;
+        if (parse.GetValue(Setups) is { } file) list = ReadSetupList(file);
+        uint? landblock = null;
+        if (parse.GetValue(Landblock) is { } lbText)
+        {
+            if (!LandblockIds.TryParse(lbText, out var id))
+                throw new CliException(ExitCodes.Usage, $"--landblock: '{lbText}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
+            landblock = id;
+        }
+        var selection = new BatchSelection(parse.GetValue(Doors), parse.GetValue(All), list, landblock);
+        if (!selection.IsEmpty) return selection;
+        if (defaultToAll) return selection with { All = true };
+        throw new CliException(ExitCodes.Usage, "choose what to export: --doors, --all, --setups FILE and/or --landblock 0xXXYY (they combine)");
+    }
+
+    /// <summary>Plans against the open dats; a landblock missing from the cell dat is "not in dat".</summary>
+    public static BatchPlan Plan(BatchSelection selection, OpenedDat dat)
+    {
+        if (selection.Landblock is { } lb && dat.Cell is null)
+            throw new CliException(ExitCodes.Usage, $"--landblock {LandblockIds.Short(lb)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
+        try
+        {
+            return BatchPlanner.Plan(selection, dat.Portal, dat.Cell, DoorCatalog.SetupIds);
+        }
+        catch (SelectionException e)
+        {
+            if (e.Problem != SelectionProblem.NotInDat) throw new CliException(ExitCodes.Usage, e.Message);
+            var known = dat.Cell!.ListIds(DatObjectKind.LandBlockInfo);
+            throw new CliException(ExitCodes.NotInDat, known.Count is > 0 and <= 8
+                ? $"{e.Message} (it has {string.Join(", ", known.Select(LandblockIds.Short))})"
+                : e.Message);
+        }
+    }
+
+    private static SetupList ReadSetupList(string path)
+    {
+        if (!File.Exists(path))
+            throw new CliException(ExitCodes.Usage, $"--setups: {path} does not exist: pass a text file with one Setup id a line");
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--setups: cannot read {path}: {e.Message}");
+        }
+        try
+        {
+            return SetupList.Parse(Path.GetFileName(path), text);
+        }
+        catch (FormatException e)
+        {
+            throw new CliException(ExitCodes.Usage, $"--setups: {e.Message}");
+        }
+    }
+}

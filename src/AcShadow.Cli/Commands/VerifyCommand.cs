@@ -1,0 +1,135 @@
+using System.CommandLine;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Export;
+using AcShadow.Core.Shapes;
+using AcShadow.Core.Verify;
+
+namespace AcShadow.Cli.Commands;
+
+/// <summary>
+/// `acshadow verify --fixtures DIR`: regenerate in memory what DIR/index.json describes, with its
+/// inputs, through the same engine batch uses, and compare file by file. Exit 0 when identical, 5 on
+/// drift (missing, extra or changed files, or a different dat).
+/// </summary>
+public static class VerifyCommand
+{
+    /// <summary>At most this many JSON differences are printed per file.</summary>
+    public const int MaxDifferencesShown = 20;
+
+    /// <summary>The folders batch writes; files in them that regeneration does not produce are "extra".</summary>
+    private static readonly string[] OutputFolders = ["setups", "gfxobjs", "scenes"];
+
+    public static Command Create(CliConsole console)
+    {
+        var fixtures = new Option<string>("--fixtures") { Description = "a folder batch wrote (it holds index.json)", HelpName = "DIR", Required = true };
+        var dat = CommonOptions.Dat();
+        var cellDat = new Option<string?>("--cell-dat") { Description = "client_cell_1.dat (or its folder), when the fixtures hold a scene", HelpName = "PATH" };
+        var jobs = SelectionOptions.Jobs();
+        var command = new Command("verify", "Check that a fixtures folder still matches what the dat gives (exit 5 on drift)")
+        {
+            fixtures, dat, cellDat, jobs,
+        };
+        command.SetAction(parse => Run(console, parse.GetValue(fixtures)!, parse.GetValue(dat), parse.GetValue(cellDat),
+            SelectionOptions.ParseJobs(parse.GetValue(jobs))));
+        return command;
+    }
+
+    private static int Run(CliConsole console, string folder, string? datPath, string? cellPath, int jobs)
+    {
+        var index = ReadIndex(folder);
+        var recorded = index.Inputs;
+        using var dat = DatLocator.Open(datPath, cellPath, console);
+        var selection = recorded.Selection;
+        if (selection.Landblock is { } lb && dat.Cell is null)
+            throw new CliException(ExitCodes.Usage, $"the fixtures hold the scene of landblock {LandblockIds.Short(lb)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
+
+        var plan = SelectionOptions.Plan(selection, dat);
+        var engine = new ExportEngine(dat.Portal, new ShapeBuildOptions(recorded.Policy, recorded.EntityScale));
+        var cellInfo = selection.Landblock is null ? null : dat.Cell?.Info;
+        var inputs = recorded with { Dat = dat.Portal.Info, CellDat = cellInfo };
+        var result = BatchRunner.Run(engine, plan, inputs, jobs);
+
+        var expected = result.AllFiles.ToDictionary(f => f.Path, f => f.Content, StringComparer.Ordinal);
+        var actual = ReadFolder(folder, index);
+        var datDifferences = FixtureComparer.DatDifferences("dat", recorded.Dat, dat.Portal.Info)
+            .Concat(FixtureComparer.DatDifferences("cell dat", recorded.CellDat, cellInfo)).ToArray();
+        var comparison = FixtureComparer.Compare(expected, actual, datDifferences);
+        return Report(console, folder, dat.Description, comparison);
+    }
+
+    private static BatchIndex ReadIndex(string folder)
+    {
+        if (!Directory.Exists(folder))
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} is not a folder: pass the folder `acshadow batch --out` wrote");
+        var path = Path.Combine(folder, BatchResult.IndexPath);
+        if (!File.Exists(path))
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} has no {BatchResult.IndexPath}: pass a folder `acshadow batch --out` wrote");
+        try
+        {
+            return BatchIndexReader.Read(File.ReadAllBytes(path));
+        }
+        catch (FormatException e)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {path} is not a batch index: {e.Message}");
+        }
+        catch (IOException e)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: cannot read {path}: {e.Message}");
+        }
+    }
+
+    /// <summary>index.json, every file under the folders batch writes, and any other file the index lists.</summary>
+    private static Dictionary<string, byte[]> ReadFolder(string folder, BatchIndex index)
+    {
+        var files = new Dictionary<string, byte[]>(StringComparer.Ordinal);
+        void Add(string relative)
+        {
+            var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
+            if (File.Exists(full)) files[relative] = File.ReadAllBytes(full);
+        }
+        Add(BatchResult.IndexPath);
+        foreach (var sub in OutputFolders)
+        {
+            var dir = Path.Combine(folder, sub);
+            if (!Directory.Exists(dir)) continue;
+            foreach (var file in Directory.EnumerateFiles(dir, "*", SearchOption.AllDirectories))
+            {
+                if (file.EndsWith(".tmp", StringComparison.Ordinal)) continue; // an interrupted write's leftover
+                Add(Path.GetRelativePath(folder, file).Replace(Path.DirectorySeparatorChar, '/'));
+            }
+        }
+        foreach (var listed in index.Files) Add(listed.Path);
+        return files;
+    }
+
+    private static int Report(CliConsole console, string folder, string source, FixtureComparison c)
+    {
+        var o = console.Out;
+        if (c.IsIdentical)
+        {
+            o.WriteLine($"verify: {folder} matches a fresh regeneration from {source} ({c.Compared} file(s), index.json included)");
+            return ExitCodes.Ok;
+        }
+        foreach (var d in c.DatDifferences) o.WriteLine($"dat differs from the one index.json records: {d}");
+        foreach (var changed in c.Changed)
+        {
+            o.WriteLine($"changed {changed.Path}");
+            if (changed.Differences is null)
+            {
+                o.WriteLine("  (not JSON on one side: the bytes differ)");
+                continue;
+            }
+            foreach (var d in changed.Differences.Take(MaxDifferencesShown)) o.WriteLine($"  {changed.Path}: {d}");
+            if (changed.Differences.Count > MaxDifferencesShown)
+                o.WriteLine($"  … and {changed.Differences.Count - MaxDifferencesShown} more difference(s) in {changed.Path}");
+        }
+        foreach (var path in c.Missing) o.WriteLine($"missing {path} (regeneration writes it; {folder} lacks it)");
+        foreach (var path in c.Extra) o.WriteLine($"extra {path} ({folder} has it; regeneration does not write it)");
+        console.Error.WriteLine(
+            $"acshadow: {folder} drifted: {c.Changed.Count} changed, {c.Missing.Count} missing, {c.Extra.Count} extra file(s)" +
+            (c.DatDifferences.Count > 0 ? ", a different dat" : "") +
+            " — if the change is intended, regenerate the fixtures (scripts/regenerate-fixtures.sh, or batch with index.json's inputs)");
+        return ExitCodes.Drift;
+    }
+}
