@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Regenerates fixtures/ — the golden output of `acshadow batch --doors --all` plus the sample landblock's
+# scene — from the built-in forged sample, in one run (one index.json that `acshadow verify` checks).
+# Idempotent: the output is byte-identical on every run and machine, so a rerun leaves no git diff.
+# Usage: scripts/regenerate-fixtures.sh            (from anywhere; needs the .NET 10 SDK)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
+# The fixtures come from the built-in sample, never from a dat the caller happens to have configured.
+unset ACSHADOW_DAT
+
+dotnet build src/AcShadow.Cli -c Release --nologo -v quiet -clp:ErrorsOnly
+acshadow=(dotnet src/AcShadow.Cli/bin/Release/net10.0/acshadow.dll)
+
+# Write into a fresh folder first, so a failed run leaves the committed fixtures untouched.
+staging="$(mktemp -d "${TMPDIR:-/tmp}/acshadow-fixtures.XXXXXX")"
+trap 'rm -rf "$staging"' EXIT
+"${acshadow[@]}" batch --doors --all --landblock 0xA9B4 --out "$staging" --quiet
+
+# Replace only what batch writes (fixtures/README.md stays).
+rm -rf fixtures/index.json fixtures/setups fixtures/gfxobjs fixtures/scenes
+mkdir -p fixtures
+cp -R "$staging"/. fixtures/
+"${acshadow[@]}" verify --fixtures fixtures
