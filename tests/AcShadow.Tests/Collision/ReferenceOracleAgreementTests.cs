@@ -1,0 +1,69 @@
+using System.Diagnostics;
+using AcShadow.Core.Collision;
+using Xunit.Abstractions;
+
+namespace AcShadow.Tests.Collision;
+
+/// <summary>
+/// The reference (retail tree traversal) and the brute force answer the same predicate; on trees whose
+/// pruning is conservative they must agree on every probe, boundary cases included — except at an exact
+/// float tie, dist = ±(r − ε) at a splitting plane, where retail's "dist ≥ reach → positive child only"
+/// drops a polygon lying in that plane on the other side. Each such disagreement must be that tie: the
+/// reference says clear, the brute force blocked, and a sphere one hair (1e-5 m) larger blocks in both.
+/// </summary>
+public class ReferenceOracleAgreementTests(ITestOutputHelper output)
+{
+    private const int SampleProbes = 120_000;
+    private const int ForgedProbes = 60_000;
+
+    [Fact]
+    public void Reference_and_brute_force_agree_on_the_sample_parts()
+    {
+        var dumps = CollisionCorpus.Sample;
+        Assert.NotEmpty(dumps);
+        var total = Agree(dumps.Select(d => ($"GfxObj 0x{d.GfxObjId:X8}", CompiledBsp.Compile(d))).ToArray(), SampleProbes, seed: 4);
+        Assert.True(total >= SampleProbes);
+    }
+
+    [Fact]
+    public void Reference_and_brute_force_agree_on_forged_parts()
+    {
+        var parts = CollisionCorpus.Forged().Select(f => (f.Name, CompiledBsp.Compile(f.Dump))).ToArray();
+        var total = Agree(parts, ForgedProbes, seed: 7);
+        Assert.True(total >= ForgedProbes);
+    }
+
+    private int Agree((string Name, CompiledBsp Bsp)[] parts, int probes, int seed)
+    {
+        var watch = Stopwatch.StartNew();
+        var perPart = probes / parts.Length + 1;
+        var failures = new List<string>();
+        var total = 0;
+        var tiesTotal = 0;
+        foreach (var (name, bsp) in parts)
+        {
+            Assert.True(bsp.PruningIsConservative, $"{name}: {string.Join("; ", bsp.Diagnostics)}");
+            var reference = new BspSphereQuery(bsp);
+            var oracle = new BruteForceSphereQuery(bsp);
+            var blocked = 0;
+            var ties = 0;
+            foreach (var (center, radius, kind) in StressProbes.For(bsp, perPart, seed + total))
+            {
+                var a = reference.Overlaps(center, radius);
+                var b = oracle.Overlaps(center, radius);
+                if (a) blocked++;
+                total++;
+                if (a == b) continue;
+                if (!a && b && reference.Overlaps(center, radius + 1e-5f) && oracle.Overlaps(center, radius + 1e-5f)) { ties++; continue; }
+                if (failures.Count < 20)
+                    failures.Add($"{name}: {kind} probe ({center.X:R}, {center.Y:R}, {center.Z:R}) r={radius:R}: reference {a}, brute force {b}");
+            }
+            tiesTotal += ties;
+            output.WriteLine($"{name}: {perPart} probes, {blocked} blocked, {ties} exact ties");
+        }
+        output.WriteLine($"{total} probes in {watch.Elapsed.TotalSeconds:0.00} s, {tiesTotal} exact ties");
+        Assert.True(tiesTotal < total / 100, $"{tiesTotal} ties in {total} probes: too many to be ties");
+        Assert.True(failures.Count == 0, string.Join("\n", failures));
+        return total;
+    }
+}
