@@ -5,7 +5,7 @@ using AcShadow.Forge.Spec;
 namespace AcShadow.Forge;
 
 /// <summary>
-/// Writes the built-in sample spec in code (a 288-polygon house is not typed by hand). Its JSON,
+/// Writes the built-in sample spec in code (a 310-polygon house is not typed by hand). Its JSON,
 /// Sample/sample.json, is what the forge embeds and builds; `forge sample --write-spec FILE`
 /// regenerates that file from here, and a test keeps the two identical.
 /// </summary>
@@ -65,7 +65,7 @@ public static class SampleSpecAuthor
             LShape().ToSpec(LBlock, true, true, "L-shaped closed, non-convex block (7 sides, top and bottom as two convex pieces each)"),
             new MeshBuilder().Prism(new(0f, 0f, 0f), 0.25f, 2f, 8, 2)
                 .ToSpec(Column, true, true, "octagonal column, 2 rings; also placed bare in the landblock"),
-            HouseMesh().ToSpec(House, true, true, "house 10 x 8 m: floor, two-sided subdivided walls with a door opening, interior wall, gable roof (288 polygons)"),
+            HouseMesh().ToSpec(House, true, true, "house 10 x 8 m: floor, two-sided subdivided walls with a door opening, interior wall, gable roof, furniture boxes (310 polygons)"),
             OddMesh().ToSpec(OddGfxObj, true, false, "closed box plus one degenerate (collinear) triangle (polygon 6) and one non-planar quad (polygon 7); physics only"),
         ],
         Setups =
@@ -291,7 +291,8 @@ public static class SampleSpecAuthor
 
     /// <summary>
     /// 10 x 8 x 3 m walls on a 1 m grid (x in [-5, 5], y in [-4, 4]); a 2 x 2 m door opening in the front
-    /// wall (y = -4) and in an interior wall (x = 2); gable roof with its ridge along x at z = 5.
+    /// wall (y = -4) and in an interior wall (x = 2); gable roof with its ridge along x at z = 5; four
+    /// furniture boxes.
     /// Walls are two-sided (sidesType None) so they stop movement from inside and out.
     /// </summary>
     private static MeshBuilder HouseMesh()
@@ -309,6 +310,12 @@ public static class SampleSpecAuthor
         m.Grid((i, j) => new(X(i), j, 5 - 0.5f * j), 10, 4);                                      // roof, back slope
         m.Polygon([new(5, -4, 3), new(5, 4, 3), new(5, 0, 5)], "None");                           // gable ends
         m.Polygon([new(-5, 4, 3), new(-5, -4, 3), new(-5, 0, 5)], "None");
+        // Furniture on whole-metre lines: their side planes fall between tiles, so they split the tile
+        // sets without spanning them and the tree grows deep instead of ending in 80-tile leaves.
+        m.Box(new(-4, 2, 0), new(-3, 3, 3));                                                      // stove and chimney
+        m.Box(new(-2, 1, 0), new(0, 3, 0.5f));                                                    // bed
+        m.Box(new(3, -2, 0), new(4, -1, 1));                                                      // table
+        m.Box(new(3, 2, 0), new(4, 3, 0.7f));                                                     // chest
         return m;
     }
 

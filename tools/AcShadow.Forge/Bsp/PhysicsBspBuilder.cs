@@ -13,12 +13,15 @@ namespace AcShadow.Forge.Bsp;
 /// both sides goes to both children; one lying in the plane goes to the side its normal faces.</item>
 /// <item>Choice: lowest score = 4 × spanning + |pos − neg|, ties to the lowest polygon id. Pure
 /// "fewest spanning first" turns every convex piece into a one-polygon-per-level chain.</item>
-/// <item>Stop at ≤ <see cref="MaxLeafPolygons"/> polygons, when no plane separates the set, or at
+/// <item>Open meshes stop at ≤ <see cref="MaxLeafPolygons"/> polygons or when no plane separates the set.
+/// Closed meshes (every edge used once in each direction: a watertight, consistently wound solid) are
+/// split until every plane on the way has been used, including a last split by a plane with nothing
+/// behind it, so that the inside of the solid ends up in empty negative leaves. Every mesh stops at
 /// <see cref="MaxDepth"/> (the reader refuses trees deeper than 256).</item>
-/// <item>Solid rule: leaves holding polygons are never solid. When a split leaves nothing behind its plane
-/// and the polygons form a closed mesh (every edge used once in each direction), that empty negative
-/// side is inside the mesh and gets an empty leaf with Solid = 1. Open meshes get no empty leaves: the
-/// child is simply absent and the tag says so.</item>
+/// <item>Solid rule: a leaf is solid (Solid = 1) exactly when it holds no polygons, is the negative child
+/// of its parent, and the mesh is closed: behind an outward-facing surface of a closed mesh, with no
+/// surface further in, is the inside. Leaves holding polygons are never solid; open meshes get no empty
+/// leaves (the child is absent and the tag says so).</item>
 /// <item>Every node's sphere contains every vertex of every polygon below it; an empty leaf takes its
 /// parent's sphere. The root's sphere is the part's broad-phase sphere.</item>
 /// </list>
@@ -53,11 +56,12 @@ public static class PhysicsBspBuilder
     private sealed class BuildState(Poly[] polys, bool closed)
     {
         private int _nextLeaf;
+        private readonly List<Plane> _path = [];
 
         public PhysicsBspNode Node(int[] set, int depth, Sphere? parentSphere)
         {
             var sphere = set.Length == 0 ? parentSphere!.Value : Bounds(set);
-            if (set.Length <= MaxLeafPolygons || depth >= MaxDepth || ChooseSplitter(set) is not { } splitter)
+            if (!closed && set.Length <= MaxLeafPolygons || depth >= MaxDepth || ChooseSplitter(set) is not { } splitter)
                 return Leaf(set, sphere, solid: false);
 
             var pos = new List<int>(set.Length);
@@ -68,9 +72,11 @@ public static class PhysicsBspBuilder
                 if (side != Side.Neg) pos.Add(i);
                 if (side != Side.Pos) neg.Add(i);
             }
+            _path.Add(splitter);
             var posChild = pos.Count > 0 ? Node([.. pos], depth + 1, sphere) : null;
             var negChild = neg.Count > 0 ? Node([.. neg], depth + 1, sphere)
                 : closed ? Leaf([], sphere, solid: true) : null;
+            _path.RemoveAt(_path.Count - 1);
             return new PhysicsBspNode(BspNodeTypes.ForChildren(posChild is not null, negChild is not null),
                 splitter, posChild, negChild, sphere, 0, 0, []);
         }
@@ -82,7 +88,7 @@ public static class PhysicsBspBuilder
         {
             var candidates = new List<Plane>();
             foreach (var i in set)
-                if (polys[i].Plane is { } plane && !candidates.Contains(plane)) candidates.Add(plane);
+                if (polys[i].Plane is { } plane && !candidates.Contains(plane) && !_path.Contains(plane)) candidates.Add(plane);
             if (candidates.Count > MaxCandidates)
                 candidates = Enumerable.Range(0, MaxCandidates).Select(k => candidates[k * candidates.Count / MaxCandidates]).ToList();
 
@@ -100,7 +106,9 @@ public static class PhysicsBspBuilder
                         default: pos++; neg++; spanning++; break;
                     }
                 }
-                if (pos == set.Length || neg == set.Length) continue; // separates nothing
+                // A split must separate something; in a closed mesh a plane with nothing behind it also
+                // counts (it walls off the inside: the empty negative side becomes a solid leaf).
+                if (neg == set.Length || pos == set.Length && !(closed && neg == 0)) continue;
                 var score = 4 * spanning + Math.Abs(pos - neg);
                 if (score < bestScore) { bestScore = score; best = plane; }
             }
