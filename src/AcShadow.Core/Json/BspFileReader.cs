@@ -24,7 +24,7 @@ public static class BspFileReader
             Int(p, "id"),
             Arr(p, "vertexIds").Select(e => e.GetInt32()).ToArray(),
             OptionalPlane(Prop(p, "plane")),
-            Enum.Parse<SidesType>(Str(p, "sidesType")),
+            (SidesType)Int(p, "sidesType"),
             (Stippling)Int(p, "stippling"))).ToArray();
         var nodes = Arr(root, "nodes").Select(ReadNode).ToArray();
         var s = Prop(root, "stats");

@@ -26,7 +26,7 @@ public static class BspFileWriter
         .Add("id", p.Id)
         .Add("vertexIds", JsonArr.Of(p.VertexIds))
         .Add("plane", p.Plane is { } plane ? JsonShapes.Plane(plane) : JsonNull.Value)
-        .Add("sidesType", p.SidesType.ToString())
+        .Add("sidesType", (int)p.SidesType)
         .Add("stippling", (int)p.Stippling);
 
     private static JsonNode Node(BspNode n)
