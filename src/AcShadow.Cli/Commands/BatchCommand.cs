@@ -68,7 +68,17 @@ public static class BatchCommand
         }
 
         var exported = clock.Elapsed;
-        var (filesWritten, unchanged, written) = Write(outDir, result, incremental, jobs);
+        var writing = new ProgressReporter(console.Error, console.IsTerminal, quiet, "files written");
+        int filesWritten, unchanged;
+        long written;
+        try
+        {
+            (filesWritten, unchanged, written) = Write(outDir, result, incremental, jobs, writing.Report);
+        }
+        finally
+        {
+            writing.Finish();
+        }
 
         var o = console.Out;
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -89,15 +99,21 @@ public static class BatchCommand
     /// Files in parallel (each atomically, so order does not matter), then index.json last: an index on
     /// disk only ever describes files already written.
     /// </summary>
-    private static (int Written, int Unchanged, long Bytes) Write(string outDir, BatchResult result, bool incremental, int jobs)
+    private static (int Written, int Unchanged, long Bytes) Write(string outDir, BatchResult result, bool incremental, int jobs,
+        Action<BatchProgress> progress)
     {
-        int filesWritten = 0, unchanged = 0;
+        int filesWritten = 0, unchanged = 0, done = 0;
         long bytes = 0;
+        var total = result.Files.Count + 1;
         void WriteOne(string path, byte[] content)
         {
-            if (incremental && OutputFolder.IsUnchanged(outDir, path, content)) { Interlocked.Increment(ref unchanged); return; }
-            Interlocked.Add(ref bytes, OutputFolder.WriteAtomically(outDir, path, content));
-            Interlocked.Increment(ref filesWritten);
+            if (incremental && OutputFolder.IsUnchanged(outDir, path, content)) Interlocked.Increment(ref unchanged);
+            else
+            {
+                Interlocked.Add(ref bytes, OutputFolder.WriteAtomically(outDir, path, content));
+                Interlocked.Increment(ref filesWritten);
+            }
+            progress(new BatchProgress(Interlocked.Increment(ref done), total));
         }
         try
         {
