@@ -10,6 +10,7 @@ public sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose
 {
     public static string NameOf(ShadowShape s) => s.Source switch
     {
+        _ when s.SourceIndex < 0 => "Setup Radius x Height",
         ShapeSource.Part => $"part {s.SourceIndex} (GfxObj 0x{s.GfxObjId ?? 0:X8})",
         ShapeSource.CylSphere => $"CylSphere {s.SourceIndex}",
         _ => $"Sphere {s.SourceIndex}",

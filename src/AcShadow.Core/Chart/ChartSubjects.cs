@@ -1,0 +1,40 @@
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Collision;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
+
+namespace AcShadow.Core.Chart;
+
+/// <summary>Chart subjects from a dat: each Setup with cached GfxObj and compiled-BSP lookups shared across Setups.</summary>
+public sealed class ChartSubjects
+{
+    private readonly IDatSource _dat;
+    private readonly Dictionary<uint, GfxObj?> _gfxObjs = [];
+    private readonly Lock _lock = new();
+
+    public CompiledBspCache Bsps { get; }
+
+    public ChartSubjects(IDatSource dat)
+    {
+        _dat = dat;
+        Bsps = new CompiledBspCache(id => GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
+    }
+
+    /// <summary>The GfxObj, or null when the dat does not have it or cannot decode it (the shape builder reports either).</summary>
+    public GfxObj? GfxObj(uint id)
+    {
+        lock (_lock)
+        {
+            if (_gfxObjs.TryGetValue(id, out var known)) return known;
+            GfxObj? read;
+            try { read = _dat.ReadGfxObj(id); }
+            catch (DatFormatException) { read = null; }
+            _gfxObjs[id] = read;
+            return read;
+        }
+    }
+
+    /// <summary>The subject for a Setup, or null when the dat has no such Setup.</summary>
+    public ChartSubject? For(uint setupId, float entityScale = 1f) =>
+        _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, GfxObj, Bsps.Get, entityScale) : null;
+}

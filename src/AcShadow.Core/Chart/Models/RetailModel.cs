@@ -1,0 +1,19 @@
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Chart.Models;
+
+/// <summary>
+/// The reference: the retail shape family (ShadowShapeBuilder, Retail policy: parts' BSPs if any part has
+/// one, else CylSpheres, else Spheres) with each BSP part answered by the retail tree query.
+/// </summary>
+public sealed class RetailModel : IShapeModel
+{
+    public string Name => "retail";
+    public string Description => "retail rules: every posed part's PhysicsBSP if any part has one, else CylSpheres, else Spheres (the reference)";
+
+    public PreparedModel Prepare(ChartSubject subject)
+    {
+        var set = ShadowShapeBuilder.Build(subject.Setup, subject.GfxObjs, new ShapeBuildOptions(ShapePolicy.Retail, subject.EntityScale));
+        return PreparedModel.Of(set.Shapes, subject, set.Diagnostics);
+    }
+}

@@ -1,0 +1,28 @@
+using System.Text;
+using static AcShadow.Core.Chart.Output.ChartFormat;
+
+namespace AcShadow.Core.Chart.Output;
+
+/// <summary>chart.csv: one row per object × model, in selection order then model order.</summary>
+public static class ChartCsv
+{
+    public const string Header =
+        "setup,model,shapes,probes,doorway_probes,agree,agreement_pct,false_pass,false_block,doorway_false_pass,doorway_false_block," +
+        "median_ns_per_query,p10_ns_per_query,p90_ns_per_query,exact,cheapest_exact,grid_spacing_m,diagnostics";
+
+    public static string Write(ChartReport report)
+    {
+        var csv = new StringBuilder(Header).Append('\n');
+        foreach (var o in report.Objects)
+            foreach (var m in o.Models)
+            {
+                csv.Append(string.Join(',',
+                    Id(o.SetupId), Csv(m.Model), I(m.ShapeCount), I(m.Probes), I(m.DoorwayProbes), I(m.Agree), F(m.AgreementPercent, 3),
+                    I(m.FalsePass), I(m.FalseBlock), I(m.DoorwayFalsePass), I(m.DoorwayFalseBlock),
+                    F(m.Timing.MedianNs, 1), F(m.Timing.P10Ns, 1), F(m.Timing.P90Ns, 1),
+                    m.Exact ? "yes" : "no", m.Model == o.CheapestExact ? "yes" : "no", F(o.GridSpacing, 3), I(m.Diagnostics.Count)));
+                csv.Append('\n');
+            }
+        return csv.ToString();
+    }
+}
