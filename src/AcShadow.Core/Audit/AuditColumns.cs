@@ -28,6 +28,7 @@ public static class AuditColumns
         new("placement", "Placement", r => r.Placement, "placement retail uses (Resting, Default or None)"),
         new("unionPlacement", "Union placement", r => r.UnionPlacement, "placement the union policy uses"),
         new("coverage", "Coverage", r => r.Coverage, "fraction of the BSP footprint inside the Radius circle (docs/batch.md)"),
+        new("heightCoverage", "Height cov", r => r.HeightCoverage, "fraction of the BSP parts' height range inside [0, Setup.Height] (docs/batch.md)"),
         new("footprint", "Footprint m2", r => r.FootprintArea, "area of the BSP footprint, m²"),
         new("diagnostics", "Diagnostics", r => r.DiagnosticCodes, "diagnostic codes of the retail build"),
     ];

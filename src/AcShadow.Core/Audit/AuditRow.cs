@@ -4,7 +4,8 @@ namespace AcShadow.Core.Audit;
 /// One Setup's audit: its parts and which carry a PhysicsBSP, its CylSpheres and Spheres, the
 /// Radius×Height fallback, the HasPhysicsBSP flag against what the parts say, the shapes each policy
 /// builds, the physics polygons retail tests, the placement used, and how much of the BSP footprint the
-/// fallback cylinder covers (<see cref="FootprintCoverage"/>; null when there is no BSP footprint).
+/// fallback cylinder covers (<see cref="FootprintCoverage"/>; null when there is no BSP footprint) and
+/// how much of their height it spans (<see cref="Audit.HeightCoverage"/>).
 /// </summary>
 public sealed record AuditRow(
     uint SetupId,
@@ -23,6 +24,7 @@ public sealed record AuditRow(
     string Placement,
     string UnionPlacement,
     double? Coverage,
+    double? HeightCoverage,
     double? FootprintArea,
     AuditCategory Category,
     IReadOnlyList<string> DiagnosticCodes)

@@ -27,6 +27,7 @@ public static class AuditRowBuilder
             posed.Add(new FootprintCoverage.PosedPart(gfx, shape.LocalPosition, shape.LocalRotation, shape.Scale));
         }
         var coverage = posed.Count > 0 ? FootprintCoverage.Measure(posed, setup.Radius * entityScale) : null;
+        var heightCoverage = posed.Count > 0 ? HeightCoverage.Measure(posed, setup.Height * entityScale) : null;
 
         var category = retail.PartsHavePhysicsBsp ? AuditCategory.Bsp
             : setup.CylSpheres.Count > 0 ? AuditCategory.Cylinders
@@ -50,6 +51,7 @@ public static class AuditRowBuilder
             retail.Placement.Used,
             union.Placement.Used,
             coverage?.Coverage,
+            heightCoverage,
             coverage?.Area,
             category,
             retail.Diagnostics.Select(d => d.Code).Distinct().Order(StringComparer.Ordinal).ToArray());

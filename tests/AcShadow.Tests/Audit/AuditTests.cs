@@ -73,6 +73,7 @@ public class AuditTests
         {
             var door = report.Rows.Single(r => r.SetupId == id);
             Assert.InRange(door.Coverage!.Value, 0.0, 0.15);
+            Assert.InRange(door.HeightCoverage!.Value, 0.0, 0.1); // 0.2 m of a 2.3 m door
             Assert.InRange(door.FootprintArea!.Value, 0.5, 0.8);
         }
         // A radius as big as the object covers all of it.
