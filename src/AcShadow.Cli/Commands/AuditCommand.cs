@@ -2,7 +2,9 @@ using System.CommandLine;
 using System.Globalization;
 using System.Text;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Terminal;
 using AcShadow.Core.Audit;
+using AcShadow.Core.Chart;
 
 namespace AcShadow.Cli.Commands;
 
@@ -22,12 +24,13 @@ public static class AuditCommand
         var onlyBsp = new Option<bool>("--only-bsp") { Description = "only Setups with a BSP-bearing part" };
         var flagMismatch = new Option<bool>("--flag-mismatch") { Description = "only Setups whose HasPhysicsBSP flag disagrees with their parts" };
         var maxCoverage = new Option<string?>("--max-coverage") { Description = "only Setups whose fallback cylinder covers at most X (0..1) of the BSP footprint", HelpName = "X" };
-        var sort = new Option<string?>("--sort") { Description = $"sort by a column ({string.Join(", ", AuditColumns.All.Select(c => c.Key))}); prefix - for descending", HelpName = "FIELD" };
+        var sort = new Option<string?>("--sort") { Description = $"sort by a column ({string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))}); prefix - for descending", HelpName = "FIELD" };
+        var chart = new Option<bool>("--chart") { Description = "also run the collision chart per Setup: which shape models are exact, and the cheapest (slow)" };
         var jobs = SelectionOptions.Jobs();
         var command = new Command("audit", "Which Setups have BSP-bearing parts, and where a simpler shape model lies")
         {
             dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            format, outFile, onlyBsp, flagMismatch, maxCoverage, sort, jobs,
+            format, outFile, onlyBsp, flagMismatch, maxCoverage, sort, chart, jobs,
         };
         command.SetAction(parse =>
         {
@@ -35,19 +38,28 @@ public static class AuditCommand
                 ParseCoverage(parse.GetValue(maxCoverage)), ParseSort(parse.GetValue(sort)));
             var output = parse.GetValue(outFile);
             return Run(console, selection.Parse(parse, defaultToAll: true), parse.GetValue(dat), parse.GetValue(selection.CellDat),
-                query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)));
+                query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)), parse.GetValue(chart));
         });
         return command;
     }
 
     private static int Run(CliConsole console, Core.Batch.BatchSelection selection, string? datPath, string? cellPath,
-        AuditQuery query, AuditFormat format, string? output, int jobs)
+        AuditQuery query, AuditFormat format, string? output, int jobs, bool chart)
     {
         if (output is not null && Directory.Exists(output))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {output} is a folder: pass a file name, e.g. audit.csv");
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
-        var report = AuditRunner.Run(dat.Portal, plan, query, jobs);
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet: !chart, "setups charted");
+        AuditReport report;
+        try
+        {
+            report = AuditRunner.Run(dat.Portal, plan, query, jobs, chart ? new ChartOptions() : null, progress.Report);
+        }
+        finally
+        {
+            progress.Finish();
+        }
         var text = AuditWriter.Write(report, format, dat.Portal.Info, selection);
         if (output is null)
         {
@@ -80,6 +92,6 @@ public static class AuditCommand
     {
         if (text is null) return "id";
         if (AuditColumns.Find(text.TrimStart('-', '+')) is not null) return text;
-        throw new CliException(ExitCodes.Usage, $"--sort: '{text}' is not a column: use one of {string.Join(", ", AuditColumns.All.Select(c => c.Key))} (prefix - for descending)");
+        throw new CliException(ExitCodes.Usage, $"--sort: '{text}' is not a column: use one of {string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))} (prefix - for descending)");
     }
 }

@@ -3,8 +3,8 @@ using AcShadow.Core.Json;
 namespace AcShadow.Core.Audit;
 
 /// <summary>
-/// The audit's columns, in output order. A later column (e.g. the cheapest exact model from the
-/// collision chart) is one more entry here; every format picks it up.
+/// The audit's columns, in output order; every format writes the report's columns. The chart columns
+/// come only with `audit --chart` (the chart is slow and its "cheapest" is timing-dependent).
 /// </summary>
 public static class AuditColumns
 {
@@ -33,6 +33,13 @@ public static class AuditColumns
         new("diagnostics", "Diagnostics", r => r.DiagnosticCodes, "diagnostic codes of the retail build"),
     ];
 
+    public static readonly IReadOnlyList<AuditColumn> WithChart =
+    [
+        .. All,
+        new("exactModels", "Exact models", r => r.Chart?.ExactModels, "chart models that agree with retail on every probe"),
+        new("cheapestExact", "Cheapest exact", r => r.Chart?.CheapestExact, "the exact model with the lowest median query time (timing-dependent)"),
+    ];
+
     public static AuditColumn? Find(string key) =>
-        All.FirstOrDefault(c => string.Equals(c.Key, key, StringComparison.OrdinalIgnoreCase));
+        WithChart.FirstOrDefault(c => string.Equals(c.Key, key, StringComparison.OrdinalIgnoreCase));
 }

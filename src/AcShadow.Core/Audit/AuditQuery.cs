@@ -15,7 +15,7 @@ public sealed record AuditQuery(bool OnlyBsp = false, bool FlagMismatch = false,
     {
         var descending = Sort.StartsWith('-');
         var column = AuditColumns.Find(Sort.TrimStart('-', '+'))
-            ?? throw new ArgumentException($"unknown sort field '{Sort}': use one of {string.Join(", ", AuditColumns.All.Select(c => c.Key))}");
+            ?? throw new ArgumentException($"unknown sort field '{Sort}': use one of {string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))}");
         var kept = rows.Where(Keeps).ToList();
         kept.Sort((a, b) =>
         {

@@ -5,7 +5,8 @@ namespace AcShadow.Core.Audit;
 /// Radius×Height fallback, the HasPhysicsBSP flag against what the parts say, the shapes each policy
 /// builds, the physics polygons retail tests, the placement used, and how much of the BSP footprint the
 /// fallback cylinder covers (<see cref="FootprintCoverage"/>; null when there is no BSP footprint) and
-/// how much of their height it spans (<see cref="Audit.HeightCoverage"/>).
+/// how much of their height it spans (<see cref="Audit.HeightCoverage"/>). <see cref="Chart"/> is set only
+/// when the audit ran the collision chart.
 /// </summary>
 public sealed record AuditRow(
     uint SetupId,
@@ -27,7 +28,8 @@ public sealed record AuditRow(
     double? HeightCoverage,
     double? FootprintArea,
     AuditCategory Category,
-    IReadOnlyList<string> DiagnosticCodes)
+    IReadOnlyList<string> DiagnosticCodes,
+    ChartVerdict? Chart = null)
 {
     public bool FlagMismatch => FlagHasPhysicsBsp != PartsHavePhysicsBsp;
 }

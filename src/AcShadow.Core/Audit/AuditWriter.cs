@@ -25,7 +25,7 @@ public static class AuditWriter
 
     public static string Table(AuditReport report)
     {
-        var columns = AuditColumns.All;
+        var columns = report.Columns;
         var cells = report.Rows.Select(r => columns.Select(c => c.Text(r, "-")).ToArray()).ToArray();
         var widths = columns.Select((c, i) => Math.Max(c.Header.Length, cells.Length == 0 ? 0 : cells.Max(row => row[i].Length))).ToArray();
         var sb = new StringBuilder();
@@ -52,9 +52,9 @@ public static class AuditWriter
     public static string Csv(AuditReport report)
     {
         var sb = new StringBuilder();
-        sb.Append(string.Join(',', AuditColumns.All.Select(c => CsvField(c.Key)))).Append('\n');
+        sb.Append(string.Join(',', report.Columns.Select(c => CsvField(c.Key)))).Append('\n');
         foreach (var row in report.Rows)
-            sb.Append(string.Join(',', AuditColumns.All.Select(c => CsvField(c.Text(row, ""))))).Append('\n');
+            sb.Append(string.Join(',', report.Columns.Select(c => CsvField(c.Text(row, ""))))).Append('\n');
         return sb.ToString();
     }
 
@@ -66,7 +66,7 @@ public static class AuditWriter
         .Add("rows", JsonArr.Of(report.Rows, r =>
         {
             var obj = new JsonObj();
-            foreach (var c in AuditColumns.All) obj.Add(c.Key, c.Json(r));
+            foreach (var c in report.Columns) obj.Add(c.Key, c.Json(r));
             return obj;
         }))
         .Add("summary", report.Summary.Counts.Aggregate(new JsonObj(), (o, c) => o.Add(c.Key, c.Count)))
@@ -77,10 +77,10 @@ public static class AuditWriter
     {
         var sb = new StringBuilder();
         sb.Append($"# acshadow audit\n\nDat `{dat.FileName}` ({dat.Size} bytes, iteration {dat.Iteration}); selection `{selection.Describe()}`.\n\n");
-        sb.Append("| ").Append(string.Join(" | ", AuditColumns.All.Select(c => c.Header))).Append(" |\n");
-        sb.Append('|').Append(string.Concat(AuditColumns.All.Select(_ => "---|"))).Append('\n');
+        sb.Append("| ").Append(string.Join(" | ", report.Columns.Select(c => c.Header))).Append(" |\n");
+        sb.Append('|').Append(string.Concat(report.Columns.Select(_ => "---|"))).Append('\n');
         foreach (var row in report.Rows)
-            sb.Append("| ").Append(string.Join(" | ", AuditColumns.All.Select(c => c.Text(row, "-").Replace("|", "\\|")))).Append(" |\n");
+            sb.Append("| ").Append(string.Join(" | ", report.Columns.Select(c => c.Text(row, "-").Replace("|", "\\|")))).Append(" |\n");
         sb.Append("\n## Summary\n\n");
         sb.Append($"{report.Rows.Count} of {report.Audited} audited Setup(s) shown.\n\n");
         foreach (var (_, label, count) in report.Summary.Counts) sb.Append($"- {label}: {count}\n");

@@ -173,6 +173,24 @@ public class AuditTests
         Assert.Contains($"{DoorCatalog.Entries.Count - 3}  skipped (not in the dat or unreadable)", run.Out);
     }
 
+    [Fact]
+    public void Chart_adds_the_exact_models_and_the_soda_can_is_not_one_of_them()
+    {
+        var run = CliRun.Of("audit", "--doors", "--chart", "--format", "json");
+        Assert.Equal(0, run.ExitCode);
+        using var doc = JsonDocument.Parse(run.Out);
+        var rows = doc.RootElement.GetProperty("rows").EnumerateArray().ToArray();
+        Assert.Equal(3, rows.Length);
+        foreach (var row in rows)
+        {
+            var exact = row.GetProperty("exactModels").EnumerateArray().Select(e => e.GetString()).ToArray();
+            Assert.Contains("retail", exact); // the reference agrees with itself
+            Assert.DoesNotContain("fallback-cylinder", exact);
+            Assert.Contains(row.GetProperty("cheapestExact").GetString(), exact);
+        }
+        Assert.DoesNotContain("exactModels", CliRun.Of("audit", "--doors", "--format", "csv").Out);
+    }
+
     [Theory]
     [InlineData(2, "--format: 'xml'", "--format", "xml")]
     [InlineData(2, "--max-coverage: '2'", "--max-coverage", "2")]
