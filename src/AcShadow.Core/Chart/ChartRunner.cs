@@ -90,7 +90,7 @@ public static class ChartRunner
             disagreements.Add(new Disagreement(i, p, pass, BoundaryGap.Of(reference.Shapes, p.Center, p.Radius), BoundaryGap.Of(model.Shapes, p.Center, p.Radius)));
         }
         var nearest = disagreements.OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel).ToArray();
-        var timing = timer.Measure(model, probes, options);
+        var timing = timer.Measure(name, model, probes, options);
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
     }
 

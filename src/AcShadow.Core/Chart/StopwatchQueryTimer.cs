@@ -16,7 +16,7 @@ public sealed class StopwatchQueryTimer : IQueryTimer
     /// <summary>Hits seen while timing; read so the queries cannot be optimised away.</summary>
     public int Sink => _sink;
 
-    public TimingStats Measure(PreparedModel model, IReadOnlyList<Probe> probes, ChartOptions options)
+    public TimingStats Measure(string modelName, PreparedModel model, IReadOnlyList<Probe> probes, ChartOptions options)
     {
         if (probes.Count == 0) return TimingStats.Of([]);
         var n = Math.Min(options.TimingProbes, probes.Count);
