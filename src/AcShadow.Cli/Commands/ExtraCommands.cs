@@ -10,5 +10,6 @@ public static class ExtraCommands
         yield return BatchCommand.Create(console);
         yield return AuditCommand.Create(console);
         yield return VerifyCommand.Create(console);
+        yield return ChartCommand.Create(console);
     }
 }

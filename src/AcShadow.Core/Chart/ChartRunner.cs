@@ -14,17 +14,19 @@ public static class ChartRunner
 {
     public const string ModelFailed = "model-failed";
 
-    public static ChartReport Run(IEnumerable<ChartSubject> subjects, ChartOptions options, IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null, Action<string>? progress = null)
+    /// <summary>Charts every subject; <paramref name="progress"/> hears (objects done, objects in all) after each.</summary>
+    public static ChartReport Run(IEnumerable<ChartSubject> subjects, ChartOptions options, IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null, Action<int, int>? progress = null)
     {
         if (options.Problem() is { } problem) throw new ArgumentException(problem, nameof(options));
         models ??= ShapeModels.All;
         if (models.Count == 0) throw new ArgumentException("at least the reference model is needed", nameof(models));
         timer ??= new StopwatchQueryTimer();
-        var charts = new List<ObjectChart>();
-        foreach (var subject in subjects)
+        var all = subjects.ToArray();
+        var charts = new List<ObjectChart>(all.Length);
+        foreach (var subject in all)
         {
-            progress?.Invoke($"charting Setup 0x{subject.Setup.Id:X8}");
             charts.Add(Chart(subject, options, models, timer));
+            progress?.Invoke(charts.Count, all.Length);
         }
         return new ChartReport(options, models.Select(m => m.Name).ToArray(), charts);
     }

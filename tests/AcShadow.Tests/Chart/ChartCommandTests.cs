@@ -1,0 +1,40 @@
+using AcShadow.Tests.Support;
+
+namespace AcShadow.Tests.Chart;
+
+public class ChartCommandTests
+{
+    [Fact]
+    public void Chart_on_the_sample_door_writes_every_file_and_a_summary()
+    {
+        using var dir = new TempDir();
+        var run = CliRun.Of("chart", "--setup", "0x020019FF", "--out", dir.Path);
+        Assert.Equal(0, run.ExitCode);
+        Assert.Equal(["chart.csv", "failure-map-0x020019FF.svg", "failures.csv", "speed-accuracy.svg", "summary.csv"], dir.Files());
+        Assert.Contains("fallback-cylinder", run.Out);
+        Assert.Contains("0x020019FF: cheapest exact model", run.Out);
+    }
+
+    [Fact]
+    public void Several_setups_and_a_smaller_probe_are_accepted()
+    {
+        using var dir = new TempDir();
+        var run = CliRun.Of("chart", "--setup", "0x020019FF", "--setup", "0x02001000", "--probe-radius", "0.3", "--spacing", "0.5", "--out", dir.Path, "--quiet");
+        Assert.Equal(0, run.ExitCode);
+        Assert.Contains("failure-map-0x02001000.svg", dir.Files());
+        Assert.Contains("radius 0.3 m, spacing 0.5 m", run.Out);
+    }
+
+    [Theory]
+    [InlineData(2, "choose what to chart", "chart", "--out", "x")]
+    [InlineData(2, "--probe-radius: '-1' is not a positive number", "chart", "--setup", "0x020019FF", "--probe-radius", "-1", "--out", "x")]
+    [InlineData(2, "--spacing: 'abc'", "chart", "--setup", "0x020019FF", "--spacing", "abc", "--out", "x")]
+    [InlineData(2, "spacing must be at least 0.01 m", "chart", "--setup", "0x020019FF", "--spacing", "0.001", "--out", "x")]
+    [InlineData(4, "Setup 0x0200ABCD is not in", "chart", "--setup", "0x0200ABCD", "--out", "x")]
+    public void Usage_and_missing_setups_are_one_line_errors(int code, string message, params string[] args)
+    {
+        var run = CliRun.Of(args);
+        Assert.Equal(code, run.ExitCode);
+        Assert.Contains(message, run.Error);
+    }
+}
