@@ -99,7 +99,9 @@ public static class VerifyCommand
                 Add(Path.GetRelativePath(folder, file).Replace(Path.DirectorySeparatorChar, '/'));
             }
         }
-        foreach (var listed in index.Files) Add(listed.Path);
+        // Only paths inside the folder: an index is data, not a licence to read elsewhere.
+        foreach (var listed in index.Files.Where(f => !Path.IsPathRooted(f.Path) && !f.Path.Split('/', '\\').Contains("..")))
+            Add(listed.Path);
         return files;
     }
 

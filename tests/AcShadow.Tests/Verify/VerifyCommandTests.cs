@@ -87,6 +87,22 @@ public class VerifyCommandTests
         Assert.Contains("pass --cell-dat", Assert.Single(run.ErrorLines));
     }
 
+    [Fact]
+    public void An_unreadable_dat_or_a_missing_landblock_exit_with_their_codes()
+    {
+        using var dir = Fixtures("--doors", "--landblock", "0xA9B4");
+        var noDat = CliRun.Of("verify", "--fixtures", dir.Path, "--dat", "/nonexistent/client_portal.dat");
+        Assert.Equal(3, noDat.ExitCode);
+        Assert.Contains("does not exist", Assert.Single(noDat.ErrorLines));
+
+        var index = Path.Combine(dir.Path, "index.json");
+        File.WriteAllText(index, File.ReadAllText(index).Replace("\"landblock\": \"0xA9B4FFFE\"", "\"landblock\": \"0x0101FFFE\""));
+        var noLandblock = CliRun.Of("verify", "--fixtures", dir.Path);
+        Assert.Equal(4, noLandblock.ExitCode);
+        Assert.Contains("landblock 0x0101 has no LandBlockInfo", Assert.Single(noLandblock.ErrorLines, l => !l.Contains("SYNTHETIC")));
+        Assert.Equal("", noLandblock.Out);
+    }
+
     [Theory]
     [InlineData("no-folder", 2, "is not a folder")]
     [InlineData("empty", 2, "has no index.json")]
