@@ -40,6 +40,7 @@ public class ReferenceOracleAgreementTests(ITestOutputHelper output)
         var failures = new List<string>();
         var total = 0;
         var tiesTotal = 0;
+        var tieKinds = new SortedDictionary<string, int>(StringComparer.Ordinal);
         foreach (var (name, bsp) in parts)
         {
             Assert.True(bsp.PruningIsConservative, $"{name}: {string.Join("; ", bsp.Diagnostics)}");
@@ -54,14 +55,20 @@ public class ReferenceOracleAgreementTests(ITestOutputHelper output)
                 if (a) blocked++;
                 total++;
                 if (a == b) continue;
-                if (!a && b && reference.Overlaps(center, radius + 1e-5f) && oracle.Overlaps(center, radius + 1e-5f)) { ties++; continue; }
+                if (!a && b && reference.Overlaps(center, radius + 1e-5f) && oracle.Overlaps(center, radius + 1e-5f))
+                {
+                    ties++;
+                    var tieKind = radius == PhysicsEpsilon.Value ? kind + " (r = ε)" : kind;
+                    tieKinds[tieKind] = tieKinds.GetValueOrDefault(tieKind) + 1;
+                    continue;
+                }
                 if (failures.Count < 20)
                     failures.Add($"{name}: {kind} probe ({center.X:R}, {center.Y:R}, {center.Z:R}) r={radius:R}: reference {a}, brute force {b}");
             }
             tiesTotal += ties;
             output.WriteLine($"{name}: {perPart} probes, {blocked} blocked, {ties} exact ties");
         }
-        output.WriteLine($"{total} probes in {watch.Elapsed.TotalSeconds:0.00} s, {tiesTotal} exact ties");
+        output.WriteLine($"{total} probes in {watch.Elapsed.TotalSeconds:0.00} s, {tiesTotal} exact ties ({string.Join(", ", tieKinds.Select(k => $"{k.Key} {k.Value}"))})");
         Assert.True(tiesTotal < total / 100, $"{tiesTotal} ties in {total} probes: too many to be ties");
         Assert.True(failures.Count == 0, string.Join("\n", failures));
         return total;
