@@ -28,7 +28,7 @@ public class DumpCommandTests
         var run = CliRun.Of("dump", "--setup", "020019FF", "--policy", "union", "--out", outDir.Path);
         Assert.Equal(0, run.ExitCode);
         using var doc = JsonDocument.Parse(File.ReadAllText(Path.Combine(outDir.Path, "setups/0x020019FF.shadow.json")));
-        var types = doc.RootElement.GetProperty("shapes").EnumerateArray().Select(s => s.GetProperty("collisionType").GetString()).ToArray();
+        var types = doc.RootElement.GetProperty("shapes").EnumerateArray().Select(s => s.GetProperty("collisionType").GetString()!).ToArray();
         Assert.Equal(["cylinder", "bsp", "bsp", "bsp"], types);
     }
 
