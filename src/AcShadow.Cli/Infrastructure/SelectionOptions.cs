@@ -1,0 +1,94 @@
+using System.CommandLine;
+using System.Diagnostics;
+using System.Globalization;
+using AcShadow.Cli.Terminal;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Catalog;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
+using AcShadow.Core.Json;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Cli.Infrastructure;
+
+/// <summary>
+/// The selection options batch and audit share (--doors, --all, --setups, --landblock, --cell-dat) and
+/// --jobs, spelled once, with their parsing into a <see cref="BatchSelection"/> and a plan.
+/// </summary>
+public sealed class SelectionOptions
+{
+    public Option<bool> Doors { get; } = new("--doors") { Description = "every Setup of the built-in door catalog (ACE world database door weenies)" };
+    public Option<bool> All { get; } = new("--all") { Description = "every Setup in the dat" };
+    public Option<string?> Setups { get; } = new("--setups") { Description = "a file of Setup ids, one a line, '#' comments", HelpName = "FILE" };
+    public Option<string?> Landblock { get; } = new("--landblock") { Description = "a landblock's scene (needs --cell-dat unless the sample is used)", HelpName = "0xXXYY" };
+    public Option<string?> CellDat { get; } = new("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --landblock", HelpName = "PATH" };
+
+    public static Option<string?> Jobs() => new("--jobs") { Description = "parallel workers (default: all cores)", HelpName = "N" };
+
+    public static int ParseJobs(string? text)
+    {
+        if (text is null) return Environment.ProcessorCount;
+        if (int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out var n) && n is >= 1 and <= 1024) return n;
+        throw new CliException(ExitCodes.Usage, $"--jobs: '{text}' is not a worker count: use a whole number from 1 to 1024");
+    }
+
+    /// <summary>The selection; with nothing chosen, --all when <paramref name="defaultToAll"/>, else a usage error.</summary>
+    public BatchSelection Parse(ParseResult parse, bool defaultToAll)
+    {
+        SetupList? list = null;
+        if (parse.GetValue(Setups) is { } file) list = ReadSetupList(file);
+        uint? landblock = null;
+        if (parse.GetValue(Landblock) is { } lbText)
+        {
+            if (!LandblockIds.TryParse(lbText, out var id))
+                throw new CliException(ExitCodes.Usage, $"--landblock: '{lbText}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
+            landblock = id;
+        }
+        var selection = new BatchSelection(parse.GetValue(Doors), parse.GetValue(All), list, landblock);
+        if (!selection.IsEmpty) return selection;
+        if (defaultToAll) return selection with { All = true };
+        throw new CliException(ExitCodes.Usage, "choose what to export: --doors, --all, --setups FILE and/or --landblock 0xXXYY (they combine)");
+    }
+
+    /// <summary>Plans against the open dats; a landblock missing from the cell dat is "not in dat".</summary>
+    public static BatchPlan Plan(BatchSelection selection, OpenedDat dat)
+    {
+        if (selection.Landblock is { } lb && dat.Cell is null)
+            throw new CliException(ExitCodes.Usage, $"--landblock {LandblockIds.Short(lb)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
+        try
+        {
+            return BatchPlanner.Plan(selection, dat.Portal, dat.Cell, DoorCatalog.SetupIds);
+        }
+        catch (SelectionException e)
+        {
+            if (e.Problem != SelectionProblem.NotInDat) throw new CliException(ExitCodes.Usage, e.Message);
+            var known = dat.Cell!.ListIds(DatObjectKind.LandBlockInfo);
+            throw new CliException(ExitCodes.NotInDat, known.Count is > 0 and <= 8
+                ? $"{e.Message} (it has {string.Join(", ", known.Select(LandblockIds.Short))})"
+                : e.Message);
+        }
+    }
+
+    private static SetupList ReadSetupList(string path)
+    {
+        if (!File.Exists(path))
+            throw new CliException(ExitCodes.Usage, $"--setups: {path} does not exist: pass a text file with one Setup id a line");
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--setups: cannot read {path}: {e.Message}");
+        }
+        try
+        {
+            return SetupList.Parse(Path.GetFileName(path), text);
+        }
+        catch (FormatException e)
+        {
+            throw new CliException(ExitCodes.Usage, $"--setups: {e.Message}");
+        }
+    }
+}
