@@ -29,6 +29,7 @@ public static class AuditColumns
         new("unionPlacement", "Union placement", r => r.UnionPlacement, "placement the union policy uses"),
         new("coverage", "Coverage", r => r.Coverage, "fraction of the BSP footprint inside the Radius circle (docs/batch.md)"),
         new("heightCoverage", "Height cov", r => r.HeightCoverage, "fraction of the BSP parts' height range inside [0, Setup.Height] (docs/batch.md)"),
+        new("volumeCoverage", "Volume cov", r => r.VolumeCoverage, "coverage × height coverage: the fraction of the BSP parts' footprint prism the fallback cylinder fills (docs/batch.md)"),
         new("footprint", "Footprint m2", r => r.FootprintArea, "area of the BSP footprint, m²"),
         new("diagnostics", "Diagnostics", r => r.DiagnosticCodes, "diagnostic codes of the retail build"),
     ];

@@ -32,4 +32,13 @@ public sealed record AuditRow(
     ChartVerdict? Chart = null)
 {
     public bool FlagMismatch => FlagHasPhysicsBsp != PartsHavePhysicsBsp;
+
+    /// <summary>
+    /// The fraction of the BSP parts' footprint prism (footprint × their height range) that the fallback
+    /// cylinder fills: coverage × height coverage. A thin, tall door's 14 cm × 20 cm "soda can" scores
+    /// about 0.01 here while its footprint coverage alone is about 0.1.
+    /// </summary>
+    public double? VolumeCoverage => Coverage is { } c && HeightCoverage is { } h
+        ? Math.Round(c * h, 4, MidpointRounding.AwayFromZero)
+        : null;
 }

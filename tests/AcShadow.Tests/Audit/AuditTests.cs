@@ -75,6 +75,8 @@ public class AuditTests
             Assert.InRange(door.Coverage!.Value, 0.0, 0.15);
             Assert.InRange(door.HeightCoverage!.Value, 0.0, 0.1); // 0.2 m of a 2.3 m door
             Assert.InRange(door.FootprintArea!.Value, 0.5, 0.8);
+            Assert.InRange(door.VolumeCoverage!.Value, 0.0, 0.02); // near zero: the soda can fills ~1% of the door
+            Assert.Equal(Math.Round(door.Coverage.Value * door.HeightCoverage.Value, 4, MidpointRounding.AwayFromZero), door.VolumeCoverage.Value);
         }
         // A radius as big as the object covers all of it.
         Assert.Equal(1d, report.Rows.Single(r => r.SetupId == 0x02005000).Coverage);
