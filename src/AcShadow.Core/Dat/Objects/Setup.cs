@@ -5,7 +5,7 @@ namespace AcShadow.Core.Dat.Objects;
 /// <summary>
 /// A Setup (0x02xxxxxx): parts, placement frames, CylSpheres, Spheres, radius and height.
 /// Holding locations, connection points and lights are skipped on read (no collision meaning) and
-/// written empty; placement frames with animation hooks are refused with a clear error.
+/// written empty; placement frames' animation hooks are kept as bytes (<see cref="AnimationHook"/>) and written back.
 /// </summary>
 public sealed record Setup(
     uint Id,
@@ -50,10 +50,10 @@ public sealed record Setup(
             var key = r.ReadUInt32();
             var frames = new Frame[numParts];
             for (var i = 0; i < numParts; i++) frames[i] = Frame.Read(r);
-            var hooks = r.ReadUInt32();
-            if (hooks != 0)
-                throw new DatFormatException($"Setup 0x{id:X8}: placement {Placement.Name(key)} carries {hooks} animation hook(s), which acshadow does not decode");
-            placements[p] = new PlacementFrame(key, frames);
+            var hooks = new AnimationHook[r.ReadCount(r.ReadUInt32(), AnimationHookLayout.HeaderBytes, "animation hook")];
+            for (var h = 0; h < hooks.Length; h++)
+                hooks[h] = AnimationHook.Read(r, $"Setup 0x{id:X8}: placement {Placement.Name(key)}, hook {h + 1} of {hooks.Length}");
+            placements[p] = new PlacementFrame(key, frames) { Hooks = hooks };
         }
 
         var cylCount = r.ReadCount(r.ReadUInt32(), 20, "CylSphere");
@@ -109,7 +109,8 @@ public sealed record Setup(
                 throw new InvalidOperationException($"Setup 0x{Id:X8}: placement {placement.Name} has {placement.Frames.Count} frame(s); the dat stores exactly one per part ({Parts.Count})");
             w.WriteUInt32(placement.Placement);
             foreach (var f in placement.Frames) f.Write(w);
-            w.WriteUInt32(0);
+            w.WriteUInt32((uint)placement.Hooks.Count);
+            foreach (var hook in placement.Hooks) hook.Write(w);
         }
         w.WriteUInt32((uint)CylSpheres.Count);
         foreach (var c in CylSpheres) c.Write(w);
