@@ -9,8 +9,8 @@ namespace AcShadow.Tests.Collision;
 
 /// <summary>
 /// The parts the property tests run over: the built-in sample's GfxObjs (the forge's trees, read from its
-/// dat), and test meshes with trees from both the forge's builder and <see cref="TestBspBuilder"/> (whose
-/// solid leaves hold polygons, so the retail centre check runs).
+/// dat), and test meshes with trees from both the forge's builder and <see cref="TestBspBuilder"/> (in
+/// both, solid leaves hold polygons, so the retail centre check runs).
 /// </summary>
 public static class CollisionCorpus
 {

@@ -10,6 +10,9 @@ namespace AcShadow.Tests.Collision;
 /// float tie, dist = ±(r − ε) at a splitting plane, where retail's "dist ≥ reach → positive child only"
 /// drops a polygon lying in that plane on the other side. Each such disagreement must be that tie: the
 /// reference says clear, the brute force blocked, and a sphere one hair (1e-5 m) larger blocks in both.
+/// Forged trees follow retail and keep a polygon lying in a splitting plane on the negative side only, so
+/// every probe placed exactly on a face (r = ε) or exactly r − ε in front of one is such a tie: the stress
+/// probes aim there on purpose, and ties may be up to 3 % of them.
 /// </summary>
 public class ReferenceOracleAgreementTests(ITestOutputHelper output)
 {
@@ -69,7 +72,7 @@ public class ReferenceOracleAgreementTests(ITestOutputHelper output)
             output.WriteLine($"{name}: {perPart} probes, {blocked} blocked, {ties} exact ties");
         }
         output.WriteLine($"{total} probes in {watch.Elapsed.TotalSeconds:0.00} s, {tiesTotal} exact ties ({string.Join(", ", tieKinds.Select(k => $"{k.Key} {k.Value}"))})");
-        Assert.True(tiesTotal < total / 100, $"{tiesTotal} ties in {total} probes: too many to be ties");
+        Assert.True(tiesTotal < total * 3 / 100, $"{tiesTotal} ties in {total} probes: too many to be ties");
         Assert.True(failures.Count == 0, string.Join("\n", failures));
         return total;
     }

@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Collision;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Forge.Bsp;
@@ -44,24 +45,26 @@ public class RetailRuleTests
         Assert.False(q.Overlaps(corner + cornerDir * (r - Eps + 1e-4f), r));
     }
 
-    [Fact]
-    public void A_centre_in_a_solid_leaf_holding_polygons_blocks_without_touching_any()
+    [Theory, MemberData(nameof(Trees))]
+    public void A_centre_in_a_solid_leaf_holding_polygons_blocks_without_touching_any(string tree)
     {
         // BSPLEAF::sphere_intersects_solid: centre check on and solid → blocked, before any polygon test.
-        Assert.True(Query("test").Overlaps(new Vector3(0, 0, 0.5f), 0.05f));
-        Assert.True(Query("test").Overlaps(new Vector3(0.1f, -0.2f, 0.3f), 0f));
+        Assert.True(Query(tree).Overlaps(new Vector3(0, 0, 0.5f), 0.05f));
+        Assert.True(Query(tree).Overlaps(new Vector3(0.1f, -0.2f, 0.3f), 0f));
     }
 
     [Fact]
     public void Without_a_solid_leaf_holding_polygons_a_small_sphere_deep_inside_is_clear()
     {
-        // The forge's box tree ends in polygon leaves, none solid (its solid leaves are empty, and an empty
-        // leaf returns on NumPolys == 0 before the centre check): only polygon contact blocks.
-        var bsp = CompiledBsp.Compile(ForgeTree);
-        Assert.DoesNotContain(bsp.Nodes, n => n.IsLeaf && n.Solid && n.ListedPolygonCount > 0);
+        // The forge's box tree with its Solid flags cleared: only polygon contact blocks.
+        var bsp = CompiledBsp.Compile(TestGfx.Dump(0x01007603, Box, WithoutSolid(PhysicsBspBuilder.Build(Box.Vertices, Box.Polygons.Select(p => (IReadOnlyList<short>)p).ToArray()))));
+        Assert.DoesNotContain(bsp.Nodes, n => n.IsLeaf && n.Solid);
         Assert.False(new BspSphereQuery(bsp).Overlaps(new Vector3(0, 0, 0.5f), 0.05f));
         Assert.True(new BspSphereQuery(bsp).Overlaps(new Vector3(0, 0, 0.5f), 0.51f));
     }
+
+    private static PhysicsBspNode WithoutSolid(PhysicsBspNode n) =>
+        n with { Solid = 0, Pos = n.Pos is null ? null : WithoutSolid(n.Pos), Neg = n.Neg is null ? null : WithoutSolid(n.Neg) };
 
     [Fact]
     public void A_part_pose_moves_turns_and_scales_the_query_into_part_space()

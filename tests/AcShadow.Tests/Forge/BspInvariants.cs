@@ -41,7 +41,9 @@ public static class BspInvariants
                 foreach (var id in below)
                     if (!polygons.ContainsKey(id)) problems.Add($"leaf {node.LeafIndex} names polygon {id}, which does not exist");
                 inLeaves.UnionWith(below);
-                if (node.Solid != 0 && node.Polygons.Count > 0) problems.Add($"leaf {node.LeafIndex} is solid but holds polygons");
+                // Retail: BSPLEAF::sphere_intersects_solid returns on NumPolys == 0 before its centre check, so
+                // a solid leaf must hold polygons to block anything.
+                if (node.Solid != 0 && node.Polygons.Count == 0) problems.Add($"leaf {node.LeafIndex} is solid but holds no polygons");
             }
             else
             {
