@@ -4,8 +4,6 @@ using System.Globalization;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Catalog;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;

@@ -1,13 +1,8 @@
 using System.CommandLine;
-using System.Diagnostics;
 using System.Globalization;
-using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
-using AcShadow.Core.Export;
-using AcShadow.Core.Json;
-using AcShadow.Core.Shapes;
 
 namespace AcShadow.Cli.Infrastructure;
 
