@@ -24,7 +24,11 @@ public static class AcShadowApp
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0)
         {
-            console.Error.WriteLine($"acshadow: {parse.Errors[0].Message} (see `acshadow {parse.CommandResult.Command.Name} --help`)");
+            // An unrecognised word says more than the "required command" error it also causes.
+            var error = parse.Errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? parse.Errors[0];
+            var command = parse.CommandResult.Command;
+            var help = command == root ? "acshadow --help" : $"acshadow {command.Name} --help";
+            console.Error.WriteLine($"acshadow: {error.Message} (see `{help}`)");
             return ExitCodes.Usage;
         }
         try

@@ -25,7 +25,7 @@ public static class CommonOptions
 
     public static Option<string> Out(string defaultValue) => new("--out")
     {
-        Description = $"output folder (default {defaultValue})",
+        Description = "output folder",
         HelpName = "DIR",
         DefaultValueFactory = _ => defaultValue,
     };
