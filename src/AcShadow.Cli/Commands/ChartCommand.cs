@@ -11,8 +11,9 @@ using AcShadow.Core.Json;
 namespace AcShadow.Cli.Commands;
 
 /// <summary>
-/// `acshadow chart [--setup ID ...] [--doors] [--all] [--setups FILE] --out DIR [--probe-radius R] [--spacing S]`:
-/// every shape model against the retail reference on probes around each Setup; writes chart.csv,
+/// `acshadow chart [--setup ID ...] [--doors] [--all] [--setups FILE] [--landblock 0xXXYY] --out DIR [--probe-radius R] [--spacing S]`:
+/// every shape model against the retail reference on probes around each Setup (and each bare GfxObj a
+/// landblock places); writes chart.csv,
 /// summary.csv, failures.csv, speed-accuracy.svg and a failure map per Setup (docs/chart.md).
 /// </summary>
 public static class ChartCommand
@@ -29,44 +30,50 @@ public static class ChartCommand
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
         {
-            setup, dat, selection.Doors, selection.All, selection.Setups, outDir, radius, spacing, scale, quiet,
+            setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, outDir, radius, spacing, scale, quiet,
         };
         command.SetAction(parse =>
         {
             var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).ToArray();
             var chosen = new BatchSelection(parse.GetValue(selection.Doors), parse.GetValue(selection.All), null, null);
-            if (parse.GetValue(selection.Setups) is not null) chosen = selection.Parse(parse, defaultToAll: false);
+            if (parse.GetValue(selection.Setups) is not null || parse.GetValue(selection.Landblock) is not null)
+                chosen = selection.Parse(parse, defaultToAll: false);
             if (ids.Length == 0 && chosen.IsEmpty)
-                throw new CliException(ExitCodes.Usage, "choose what to chart: --setup ID (repeatable), --doors, --all and/or --setups FILE");
+                throw new CliException(ExitCodes.Usage, "choose what to chart: --setup ID (repeatable), --doors, --all, --setups FILE and/or --landblock 0xXXYY");
             var options = new ChartOptions
             {
                 ProbeRadius = Metres(parse.GetValue(radius), "--probe-radius", ChartOptions.DefaultProbeRadius),
                 Spacing = Metres(parse.GetValue(spacing), "--spacing", ChartOptions.DefaultSpacing),
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
-            return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(outDir)!, options, ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet));
+            return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
+                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet));
         });
         return command;
     }
 
-    private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string outDir, ChartOptions options, float scale, bool quiet)
+    private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, ChartOptions options, float scale, bool quiet)
     {
         var clock = Stopwatch.StartNew();
         if (File.Exists(outDir))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
-        using var dat = DatLocator.Open(datPath, null, console);
+        using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var missing = ids.Where(id => dat.Portal.ReadSetup(id) is null).ToArray();
         if (missing.Length > 0)
             throw new CliException(ExitCodes.NotInDat, $"Setup {string.Join(", ", missing.Select(JsonIds.Format))} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
         var planned = selection.IsEmpty ? null : SelectionOptions.Plan(selection, dat);
         var order = ids.Concat(planned?.Setups.Select(s => s.Id) ?? []).Distinct().ToArray();
+        var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
 
         var subjects = new ChartSubjects(dat.Portal);
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || order.Length < 2, "setups charted");
+        var chosen = order.Select(id => subjects.For(id, scale)!)
+            .Concat(bareGfxObjs.Select(id => subjects.ForBareGfxObj(id, scale)).OfType<ChartSubject>())
+            .ToArray();
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || chosen.Length < 2, "objects charted");
         ChartReport report;
         try
         {
-            report = ChartRunner.Run(order.Select(id => subjects.For(id, scale)!), options, progress: (done, total) => progress.Report(new BatchProgress(done, total)));
+            report = ChartRunner.Run(chosen, options, progress: (done, total) => progress.Report(new BatchProgress(done, total)));
         }
         finally
         {
@@ -81,7 +88,7 @@ public static class ChartCommand
 
         var w = console.Out;
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"chart: {report.Objects.Count} setup(s) from {dat.Description}, {report.Objects.Sum(o => o.Probes.Count)} probes (radius {options.ProbeRadius} m, spacing {options.Spacing} m), reference {report.Reference}"));
+            $"chart: {report.Objects.Count} object(s) ({order.Length} Setup(s), {report.Objects.Count - order.Length} bare GfxObj(s)) from {dat.Description}, {report.Objects.Sum(o => o.Probes.Count)} probes (radius {options.ProbeRadius} m, spacing {options.Spacing} m), reference {report.Reference}"));
         foreach (var s in ModelSummary.All(report))
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {s.FalsePass,7} false pass  {s.FalseBlock,7} false block  {s.Timing.MedianNs,8:0.0} ns/query median"));

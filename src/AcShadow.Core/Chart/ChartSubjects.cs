@@ -34,6 +34,13 @@ public sealed class ChartSubjects
         }
     }
 
+    /// <summary>
+    /// The subject for a bare GfxObj a landblock places: the same one-part object a scene export describes
+    /// (<see cref="Scenes.BareGfxObjShape"/>), or null when the dat has no such GfxObj.
+    /// </summary>
+    public ChartSubject? ForBareGfxObj(uint gfxObjId, float entityScale = 1f) =>
+        GfxObj(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), GfxObj, Bsps.Get, entityScale) : null;
+
     /// <summary>The subject for a Setup, or null when the dat has no such Setup.</summary>
     public ChartSubject? For(uint setupId, float entityScale = 1f) =>
         _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, GfxObj, Bsps.Get, entityScale) : null;

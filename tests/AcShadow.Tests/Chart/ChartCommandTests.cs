@@ -25,8 +25,27 @@ public class ChartCommandTests
         Assert.Contains("radius 0.3 m, spacing 0.5 m", run.Out);
     }
 
+    [Fact]
+    public void A_landblock_charts_the_setups_and_bare_gfxobjs_it_places()
+    {
+        // The sample landblock places the door and the multi-part static (Setups), a bare column and the
+        // house (GfxObjs): the same selection batch exports for the scene.
+        using var dir = new TempDir();
+        var run = CliRun.Of("chart", "--landblock", "0xA9B4", "--spacing", "1", "--out", dir.Path, "--quiet");
+        Assert.Equal(0, run.ExitCode);
+        Assert.Contains("4 object(s) (2 Setup(s), 2 bare GfxObj(s))", run.Out);
+        foreach (var id in new[] { "0x020019FF", "0x02003000", "0x01003002", "0x01005000" })
+        {
+            Assert.Contains($"failure-map-{id}.svg", dir.Files());
+            var rows = File.ReadAllLines(Path.Combine(dir.Path, "chart.csv")).Count(l => l.StartsWith(id + ",", StringComparison.Ordinal));
+            Assert.Equal(5, rows);
+        }
+    }
+
     [Theory]
     [InlineData(2, "choose what to chart", "chart", "--out", "x")]
+    [InlineData(2, "'0xZZ' is not a landblock", "chart", "--landblock", "0xZZ", "--out", "x")]
+    [InlineData(4, "has no LandBlockInfo (0x0101FFFE)", "chart", "--landblock", "0x0101", "--out", "x")]
     [InlineData(2, "--probe-radius: '-1' is not a positive number", "chart", "--setup", "0x020019FF", "--probe-radius", "-1", "--out", "x")]
     [InlineData(2, "--spacing: 'abc'", "chart", "--setup", "0x020019FF", "--spacing", "abc", "--out", "x")]
     [InlineData(2, "spacing must be at least 0.01 m", "chart", "--setup", "0x020019FF", "--spacing", "0.001", "--out", "x")]
