@@ -18,7 +18,7 @@ public static class VerifyCommand
     public const int MaxDifferencesShown = 20;
 
     /// <summary>The folders batch writes; files in them that regeneration does not produce are "extra".</summary>
-    private static readonly string[] OutputFolders = ["setups", "gfxobjs", "scenes"];
+    private static readonly string[] OutputFolders = ["setups", "gfxobjs"];
 
     public static Command Create(CliConsole console)
     {
@@ -89,6 +89,7 @@ public static class VerifyCommand
             if (File.Exists(full)) files[relative] = File.ReadAllBytes(full);
         }
         Add(BatchResult.IndexPath);
+        Add(Core.Scenes.SceneFileFormat.Path);
         foreach (var sub in OutputFolders)
         {
             var dir = Path.Combine(folder, sub);

@@ -45,7 +45,7 @@ public static class SceneExporter
                 .Add("resolved", resolved)
                 .Add("unresolved", unresolved))
             .Add("objects", objects);
-        var file = new OutputFile(SceneFileFormat.PathFor(scene.LandBlockInfoId), OutputKind.Scene, scene.LandBlockInfoId,
+        var file = new OutputFile(SceneFileFormat.Path, OutputKind.Scene, scene.LandBlockInfoId,
             CanonicalJsonWriter.WriteUtf8(json), 0, 0);
         return new SceneExport(file, bspFiles.Values.ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
     }

@@ -7,11 +7,11 @@ public static class SceneFileFormat
 {
     public const string Format = "acshadow.scene/1";
 
-    /// <summary>Relative path of a landblock's scene file inside an output folder.</summary>
-    public static string PathFor(uint landBlockInfoId) => $"scenes/{JsonIds.Format(landBlockInfoId)}.scene.json";
+    /// <summary>The scene file's path inside an output folder: one run describes at most one landblock, as it writes one index.json.</summary>
+    public const string Path = "scene.json";
 
-    /// <summary>A file's path relative to a scene file (scenes/, setups/ and gfxobjs/ are siblings).</summary>
-    public static string Reference(string outputRelativePath) => "../" + outputRelativePath;
+    /// <summary>A file's path relative to the scene file, which sits at the folder's root beside setups/ and gfxobjs/.</summary>
+    public static string Reference(string outputRelativePath) => outputRelativePath;
 
     public static string KindName(SceneObjectKind kind) => kind switch
     {

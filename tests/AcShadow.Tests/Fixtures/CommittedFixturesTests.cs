@@ -34,7 +34,7 @@ public class CommittedFixturesTests
         Assert.True(selection.GetProperty("all").GetBoolean());
         Assert.Equal("0xA9B4FFFE", selection.GetProperty("landblock").GetString());
         var paths = index.RootElement.GetProperty("files").EnumerateArray().Select(f => f.GetProperty("path").GetString()).ToArray();
-        Assert.Contains("scenes/0xA9B4FFFE.scene.json", paths);
+        Assert.Contains("scene.json", paths);
         Assert.Equal(Batch.BatchCommandTests.SampleSetups.Length, paths.Count(p => p!.StartsWith("setups/")));
     }
 

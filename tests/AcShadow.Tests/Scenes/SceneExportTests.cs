@@ -10,7 +10,7 @@ namespace AcShadow.Tests.Scenes;
 
 public class SceneExportTests
 {
-    private const string ScenePath = "scenes/0xA9B4FFFE.scene.json";
+    private const string ScenePath = "scene.json";
 
     [Fact]
     public void A_scene_writes_only_what_it_places_each_once()
@@ -61,8 +61,8 @@ public class SceneExportTests
             foreach (var o in objects)
             {
                 var file = o.GetProperty("file").GetString()!;
-                Assert.StartsWith("../", file);
-                Assert.True(File.Exists(Path.Combine(dir.Path, "scenes", file)), $"{file} is not where the scene says");
+                Assert.DoesNotContain("..", file);
+                Assert.True(File.Exists(Path.Combine(dir.Path, file)), $"{file} is not where the scene says");
             }
             foreach (var bare in objects.Where(o => o.GetProperty("kind").GetString() == "gfxObj"))
             {
@@ -103,7 +103,7 @@ public class SceneExportTests
         {
             Assert.Equal(0, run.ExitCode);
             Assert.DoesNotContain("gfxobjs/0x01001000.bsp.json", dir.Files());
-            using var doc = JsonDocument.Parse(Text(dir, "scenes/0x0102FFFE.scene.json"));
+            using var doc = JsonDocument.Parse(Text(dir, "scene.json"));
             var objects = doc.RootElement.GetProperty("objects").EnumerateArray().ToArray();
             Assert.Equal(JsonValueKind.Null, objects[0].GetProperty("file").ValueKind);
             Assert.Contains("Setup 0x0200ABCD: not in the dat", objects[0].GetProperty("diagnostics").GetRawText());
@@ -112,7 +112,7 @@ public class SceneExportTests
             Assert.Empty(objects[2].GetProperty("shapes").EnumerateArray());
             Assert.Contains("no-shapes", objects[2].GetProperty("diagnostics").GetRawText());
             Assert.Equal("other", objects[3].GetProperty("kind").GetString());
-            Assert.Equal("../setups/0x020019FF.shadow.json", objects[4].GetProperty("file").GetString());
+            Assert.Equal("setups/0x020019FF.shadow.json", objects[4].GetProperty("file").GetString());
             Assert.Equal(2, doc.RootElement.GetProperty("summary").GetProperty("resolved").GetInt32());
             Assert.Equal(3, doc.RootElement.GetProperty("summary").GetProperty("unresolved").GetInt32());
 
