@@ -22,14 +22,14 @@ public static class DatLocator
             var (portalBytes, cellBytes) = SampleDats.Build();
             var samplePortal = OpenBytes(portalBytes, "sample/" + PortalFileName);
             var sampleCell = cellDatOption is null && cellBytes is not null ? OpenBytes(cellBytes, "sample/" + CellFileName) : null;
-            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat");
+            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell);
             return new OpenedDat(samplePortal, cellFromOption ?? sampleCell, "the built-in synthetic sample", true);
         }
         var source = datOption is null ? EnvironmentVariable : "--dat";
-        var portal = OpenFile(portalPath, PortalFileName, source);
+        var portal = OpenFile(portalPath, PortalFileName, source, DatFileKind.Portal);
         try
         {
-            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat");
+            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell);
             return new OpenedDat(portal, cell, portal.Info.FileName, false);
         }
         catch
@@ -43,7 +43,7 @@ public static class DatLocator
 
     private static DatDatabase OpenBytes(byte[] bytes, string name) => DatDatabase.Open(new MemoryStream(bytes, writable: false), name);
 
-    private static DatDatabase OpenFile(string path, string expectedName, string source)
+    private static DatDatabase OpenFile(string path, string expectedName, string source, DatFileKind expectedKind)
     {
         var file = Directory.Exists(path) ? Path.Combine(path, expectedName) : path;
         if (!File.Exists(file))
@@ -59,13 +59,22 @@ public static class DatLocator
         {
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: cannot open {file}: {e.Message}");
         }
+        DatDatabase dat;
         try
         {
-            return DatDatabase.Open(stream, Path.GetFileName(file));
+            dat = DatDatabase.Open(stream, Path.GetFileName(file));
         }
         catch (DatFormatException e)
         {
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: {file} is not a readable dat: {e.Message}");
         }
+        // The header's data set says which database this is; a swapped pair would otherwise read as empty.
+        if (dat.Info.Kind != expectedKind && dat.Info.Kind is DatFileKind.Portal or DatFileKind.Cell)
+        {
+            dat.Dispose();
+            throw new CliException(ExitCodes.DatUnreadable,
+                $"{source}: {file} is a {dat.Info.Kind.ToString().ToLowerInvariant()} dat, not a {expectedKind.ToString().ToLowerInvariant()} dat: pass {expectedName} there");
+        }
+        return dat;
     }
 }

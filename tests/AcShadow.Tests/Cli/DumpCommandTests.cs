@@ -92,6 +92,17 @@ public class DumpCommandTests
     }
 
     [Fact]
+    public void A_cell_dat_passed_as_the_portal_dat_is_named_as_such()
+    {
+        using var outDir = new TempDir();
+        using var datFolder = SampleDat.WriteToTempFolder();
+        var run = CliRun.Of("dump", "--setup", "0x020019FF", "--dat", Path.Combine(datFolder.Path, "client_cell_1.dat"), "--out", outDir.Path);
+        Assert.Equal(3, run.ExitCode);
+        Assert.Contains("is a cell dat, not a portal dat: pass client_portal.dat", Assert.Single(run.ErrorLines));
+        Assert.Empty(outDir.Files());
+    }
+
+    [Fact]
     public void Verbose_adds_the_stack_trace()
     {
         using var outDir = new TempDir();
