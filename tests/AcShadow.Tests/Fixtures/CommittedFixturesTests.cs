@@ -10,7 +10,7 @@ namespace AcShadow.Tests.Fixtures;
 /// </summary>
 public class CommittedFixturesTests
 {
-    private static string RepositoryFixtures()
+    internal static string RepositoryFixtures()
     {
         for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
             if (File.Exists(Path.Combine(dir.FullName, "AcShadow.sln"))) return Path.Combine(dir.FullName, "fixtures");
