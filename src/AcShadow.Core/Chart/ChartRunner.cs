@@ -51,8 +51,24 @@ public static class ChartRunner
             var answers = m == 0 ? referenceAnswers : Answers(prepared[m], probes);
             outcomes.Add(Compare(models[m].Name, prepared[m], reference, probes, referenceAnswers, answers, options, timer));
         }
-        var cheapest = outcomes.Where(o => o.Exact).OrderBy(o => o.Timing.MedianNs).FirstOrDefault()?.Model ?? "";
+        var cheapest = CheapestExact(outcomes);
         return new ObjectChart(subject.Setup.Id, probes, grid.Spacing, everything, opening, referenceAnswers, outcomes, cheapest, notes);
+    }
+
+    /// <summary>Medians within this factor of the fastest exact model's count as the same cost (timing noise).</summary>
+    public const double CostTieFactor = 1.15;
+
+    /// <summary>
+    /// The exact model with the lowest median time; models within <see cref="CostTieFactor"/> of it are a
+    /// tie, settled by model order (the reference first), so run-to-run timing noise cannot flip the answer
+    /// between two models that cost the same.
+    /// </summary>
+    internal static string CheapestExact(IReadOnlyList<ModelOutcome> outcomes)
+    {
+        var exact = outcomes.Where(o => o.Exact).ToArray();
+        if (exact.Length == 0) return "";
+        var fastest = exact.Min(o => o.Timing.MedianNs);
+        return exact.First(o => o.Timing.MedianNs <= fastest * CostTieFactor).Model;
     }
 
     private static PreparedModel Prepare(IShapeModel model, ChartSubject subject)

@@ -7,7 +7,7 @@ namespace AcShadow.Tests.Chart;
 /// <summary>Chart runs on the built-in sample with the fixed timer, computed once per options.</summary>
 public static class SampleChart
 {
-    private static readonly Lazy<ChartSubjects> Subjects = new(() =>
+    internal static readonly Lazy<ChartSubjects> Subjects = new(() =>
     {
         var (portal, _) = SampleDats.Build();
         return new ChartSubjects(DatDatabase.Open(new MemoryStream(portal), "sample_portal.dat"));
