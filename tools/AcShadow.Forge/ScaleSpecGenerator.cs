@@ -1,3 +1,4 @@
+using AcShadow.Core.Catalog;
 using System.Numerics;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
@@ -27,7 +28,7 @@ public static class ScaleSpecGenerator
         var nextGfx = 0x01000100u;
         uint NewGfxId() => nextGfx++;
 
-        var doorIds = DoorSetupIds.All;
+        var doorIds = DoorCatalog.SetupIds;
         var doorCount = Math.Min(setups, Math.Max(doorIds.Count, setups / 10));
         var rest = setups - doorCount;
         var staticCount = rest * 45 / 100;

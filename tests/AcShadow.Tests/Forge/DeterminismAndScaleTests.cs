@@ -1,3 +1,4 @@
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
 using AcShadow.Forge;
 using AcShadow.Forge.Spec;
@@ -46,7 +47,7 @@ public sealed class DeterminismAndScaleTests(SmallScaleFixture fixture) : IClass
     public void Every_door_setup_id_is_a_three_part_door_in_the_scale_dat()
     {
         var portal = fixture.Files.Portal;
-        Assert.All(DoorSetupIds.All, id =>
+        Assert.All(DoorCatalog.SetupIds, id =>
         {
             var door = portal.ReadSetup(id);
             Assert.NotNull(door);
@@ -63,7 +64,7 @@ public sealed class DeterminismAndScaleTests(SmallScaleFixture fixture) : IClass
         var setups = portal.ListIds(DatObjectKind.Setup).Select(id => portal.ReadSetup(id)!).ToArray();
         Assert.Equal(SmallScaleFixture.Setups, setups.Length);
         Assert.Contains(setups, s => s.CylSpheres.Count > 0 && s.Parts.All(p => !portal.ReadGfxObj(p)!.HasPhysics));
-        Assert.Contains(setups, s => s.Spheres.Count > 0 && s.CylSpheres.Count == 0 && s.Parts.Count == 1 && !DoorSetupIds.All.Contains(s.Id));
+        Assert.Contains(setups, s => s.Spheres.Count > 0 && s.CylSpheres.Count == 0 && s.Parts.Count == 1 && !DoorCatalog.SetupIds.Contains(s.Id));
         Assert.Contains(setups, s => s.Parts.Count >= 4 && s.Parts.All(p => portal.ReadGfxObj(p)!.HasPhysics));
         Assert.NotNull(fixture.Files.Cell);
     }
@@ -75,7 +76,7 @@ public sealed class DeterminismAndScaleTests(SmallScaleFixture fixture) : IClass
         if (tsv is null) return; // the notes live beside the repo, not in it
         var ids = File.ReadLines(tsv).Where(l => l.StartsWith("0x", StringComparison.Ordinal))
             .Select(l => Convert.ToUInt32(l.Split('\t')[0], 16)).ToArray();
-        Assert.Equal(ids, DoorSetupIds.All);
+        Assert.Equal(ids, DoorCatalog.SetupIds);
     }
 
     private static string? FindUp(string relative)

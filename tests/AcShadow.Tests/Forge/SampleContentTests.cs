@@ -1,3 +1,4 @@
+using AcShadow.Core.Catalog;
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
@@ -30,7 +31,7 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
         Assert.Equal(0.141f, door.Radius);
         Assert.Equal(0.2f, door.Height);
         Assert.True(door.Flags.HasFlag(SetupFlags.HasPhysicsBsp));
-        Assert.Contains(DoorSetup, DoorSetupIds.All);
+        Assert.Contains(DoorSetup, DoorCatalog.SetupIds);
     }
 
     [Fact]
@@ -88,8 +89,8 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
         Assert.True(Gfx(single.Parts[0]).HasPhysics);
         Assert.Equal(4, @double.Parts.Count);
         Assert.Equal(@double.Parts[0], @double.Parts[1]);
-        Assert.Contains(SinglePartDoorSetup, DoorSetupIds.All);
-        Assert.Contains(DoubleDoorSetup, DoorSetupIds.All);
+        Assert.Contains(SinglePartDoorSetup, DoorCatalog.SetupIds);
+        Assert.Contains(DoubleDoorSetup, DoorCatalog.SetupIds);
         Assert.NotEqual(@double.FindPlacement(Placement.Resting)!.Frames, @double.FindPlacement(Placement.Default)!.Frames);
     }
 
