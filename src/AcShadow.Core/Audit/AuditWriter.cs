@@ -1,3 +1,4 @@
+using AcShadow.Core.Reports;
 using System.Text;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
@@ -52,9 +53,9 @@ public static class AuditWriter
     public static string Csv(AuditReport report)
     {
         var sb = new StringBuilder();
-        sb.Append(string.Join(',', report.Columns.Select(c => CsvField(c.Key)))).Append('\n');
+        sb.Append(string.Join(',', report.Columns.Select(c => CsvField.Of(c.Key)))).Append('\n');
         foreach (var row in report.Rows)
-            sb.Append(string.Join(',', report.Columns.Select(c => CsvField(c.Text(row, ""))))).Append('\n');
+            sb.Append(string.Join(',', report.Columns.Select(c => CsvField.Of(c.Text(row, ""))))).Append('\n');
         return sb.ToString();
     }
 
@@ -92,6 +93,4 @@ public static class AuditWriter
     private static string Line(string[] cells, int[] widths) =>
         string.Join("  ", cells.Select((c, i) => c.PadRight(widths[i]))).TrimEnd();
 
-    private static string CsvField(string s) =>
-        s.IndexOfAny([',', '"', '\n', '\r']) >= 0 ? "\"" + s.Replace("\"", "\"\"") + "\"" : s;
 }

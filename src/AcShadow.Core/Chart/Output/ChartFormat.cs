@@ -17,11 +17,9 @@ internal static class ChartFormat
 
     public static string I(long value) => value.ToString(CultureInfo.InvariantCulture);
 
-    public static string Id(uint id) => "0x" + id.ToString("X8", CultureInfo.InvariantCulture);
+    public static string Id(uint id) => Json.JsonIds.Format(id);
 
-    /// <summary>A CSV field: quoted when it holds a comma, quote or line break.</summary>
-    public static string Csv(string field) =>
-        field.IndexOfAny([',', '"', '\n', '\r']) < 0 ? field : "\"" + field.Replace("\"", "\"\"") + "\"";
+    public static string Csv(string field) => Reports.CsvField.Of(field);
 
     /// <summary>Time with a unit for labels: 850 ns, 1.2 µs, 35 µs.</summary>
     public static string Time(double ns)
