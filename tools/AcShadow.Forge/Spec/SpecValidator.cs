@@ -1,3 +1,4 @@
+using AcShadow.Core.Json;
 using System.Globalization;
 using System.Numerics;
 using AcShadow.Core.Dat;
@@ -208,8 +209,8 @@ public static class SpecValidator
     private static uint ParseHex(string? text, string at)
     {
         if (text is null) throw new SpecException($"{at}: id is missing; write it as a hex string like \"0x010044B5\"");
-        var digits = text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) ? text[2..] : null;
-        if (digits is null || digits.Length is 0 or > 8 || !uint.TryParse(digits, NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out var id))
+        // The spec insists on the 0x prefix the output formats use; the digits parse as everywhere else.
+        if (!text.StartsWith("0x", StringComparison.OrdinalIgnoreCase) || !JsonIds.TryParse(text, out var id))
             throw new SpecException($"{at}: id \"{text}\" is not a hex id like \"0x010044B5\"");
         return id;
     }
