@@ -8,14 +8,15 @@ public static class ShadowFileWriter
 {
     public static byte[] Write(Setup setup, ShadowShapeSet set) => CanonicalJsonWriter.WriteUtf8(ToJson(setup, set));
 
-    public static JsonObj ToJson(Setup setup, ShadowShapeSet set) => new JsonObj()
+    /// <param name="bspReference">How a shape names its BSP file; by default relative to setups/ (the shadow file's folder).</param>
+    public static JsonObj ToJson(Setup setup, ShadowShapeSet set, Func<uint, string>? bspReference = null) => new JsonObj()
         .Add("format", ShadowFileFormat.Format)
         .Add("setupId", JsonIds.Format(set.SetupId))
         .Add("policy", set.Policy.Name())
         .Add("placement", new JsonObj().Add("requested", set.Placement.Requested).Add("used", set.Placement.Used))
         .Add("entityScale", set.EntityScale)
         .Add("setup", SetupFacts(setup, set))
-        .Add("shapes", JsonArr.Of(set.Shapes, Shape))
+        .Add("shapes", JsonArr.Of(set.Shapes, s => Shape(s, bspReference ?? ShadowFileFormat.BspReference)))
         .Add("diagnostics", JsonArr.Of(set.Diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
 
     private static JsonObj SetupFacts(Setup setup, ShadowShapeSet set) => new JsonObj()
@@ -36,7 +37,7 @@ public static class ShadowFileWriter
     private static IEnumerable<string> FlagNames(SetupFlags flags) =>
         Enum.GetValues<SetupFlags>().Where(f => f != SetupFlags.None && flags.HasFlag(f)).Select(f => f.ToString());
 
-    private static JsonNode Shape(ShadowShape s)
+    private static JsonNode Shape(ShadowShape s, Func<uint, string> bspReference)
     {
         var obj = new JsonObj()
             .Add("source", ShadowFileFormat.SourceName(s.Source))
@@ -51,7 +52,7 @@ public static class ShadowFileWriter
         if (s.CollisionType == CollisionType.Bsp && s.GfxObjId is { } gfx)
         {
             if (s.LocalSphere is { } sphere) obj.Add("localSphere", JsonShapes.Sphere(sphere));
-            obj.Add("bsp", ShadowFileFormat.BspReference(gfx));
+            obj.Add("bsp", bspReference(gfx));
         }
         return obj;
     }

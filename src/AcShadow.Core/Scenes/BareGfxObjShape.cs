@@ -15,21 +15,10 @@ public static class BareGfxObjShape
     public static ShadowShapeSet Build(GfxObj gfx, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options) =>
         ShadowShapeBuilder.Build(OnePartSetup(gfx), gfxObjs, options);
 
-    /// <summary>
-    /// The shapes array as the shadow file writes it, with each BSP reference made relative to the scene
-    /// file (which sits beside gfxobjs/, not inside setups/).
-    /// </summary>
-    public static JsonNode ShapesJson(GfxObj gfx, ShadowShapeSet set)
-    {
-        var shapes = (JsonArr)ShadowFileWriter.ToJson(OnePartSetup(gfx), set).Members.First(m => m.Key == "shapes").Value;
-        foreach (var shape in shapes.Items.OfType<JsonObj>())
-        {
-            var bsp = shape.Members.FindIndex(m => m.Key == "bsp");
-            if (bsp >= 0)
-                shape.Members[bsp] = new("bsp", new JsonStr(SceneFileFormat.Reference(BspFileFormat.PathFor(gfx.Id))));
-        }
-        return shapes;
-    }
+    /// <summary>The shapes array as the shadow file writes it, each BSP reference relative to the scene file (the folder root).</summary>
+    public static JsonNode ShapesJson(GfxObj gfx, ShadowShapeSet set) =>
+        ShadowFileWriter.ToJson(OnePartSetup(gfx), set, id => BspFileFormat.PathFor(id))
+            .Members.First(m => m.Key == "shapes").Value;
 
     /// <summary>The flag agrees with the part, so the builder reports no mismatch that the dat never stored.</summary>
     internal static Setup OnePartSetup(GfxObj gfx) => new(

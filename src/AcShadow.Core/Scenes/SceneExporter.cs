@@ -69,7 +69,7 @@ public static class SceneExporter
         switch (placed.Kind)
         {
             case SceneObjectKind.Setup when setups.TryGetValue(placed.Id, out var export):
-                file = SceneFileFormat.Reference(export.Shadow.RelativePath);
+                file = export.Shadow.RelativePath;
                 break;
             case SceneObjectKind.Setup:
                 diagnostics.Add(new("unresolved", $"Setup {JsonIds.Format(placed.Id)}: {setupProblems.GetValueOrDefault(placed.Id, SkippedItem.NotInDat)}"));
@@ -120,7 +120,7 @@ public static class SceneExporter
         var (dump, dumpDiagnostics) = engine.ExportGfxObj(id);
         diagnostics.AddRange(dumpDiagnostics);
         if (dump is not null) bspFiles[dump.RelativePath] = dump;
-        return (dump is null ? null : SceneFileFormat.Reference(dump.RelativePath), BareGfxObjShape.ShapesJson(gfx, set));
+        return (dump is null ? null : dump.RelativePath, BareGfxObjShape.ShapesJson(gfx, set));
     }
 
     private static JsonObj FrameJson(JsonArr origin, Frame frame) =>

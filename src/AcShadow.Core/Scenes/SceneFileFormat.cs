@@ -7,11 +7,12 @@ public static class SceneFileFormat
 {
     public const string Format = "acshadow.scene/1";
 
-    /// <summary>The scene file's path inside an output folder: one run describes at most one landblock, as it writes one index.json.</summary>
+    /// <summary>
+    /// The scene file's path inside an output folder: one run describes at most one landblock, as it writes
+    /// one index.json. It sits at the root beside setups/ and gfxobjs/, so the output-relative paths of the
+    /// files it names are also relative to it.
+    /// </summary>
     public const string Path = "scene.json";
-
-    /// <summary>A file's path relative to the scene file, which sits at the folder's root beside setups/ and gfxobjs/.</summary>
-    public static string Reference(string outputRelativePath) => outputRelativePath;
 
     public static string KindName(SceneObjectKind kind) => kind switch
     {
