@@ -86,7 +86,7 @@ public static class VerifyCommand
         void Add(string relative)
         {
             var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
-            if (File.Exists(full)) files[relative] = File.ReadAllBytes(full);
+            if (!files.ContainsKey(relative) && File.Exists(full)) files[relative] = File.ReadAllBytes(full);
         }
         Add(BatchResult.IndexPath);
         Add(Core.Scenes.SceneFileFormat.Path);
