@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Collision;
@@ -25,15 +24,13 @@ public sealed class PhysicsBspBuilderTests
         SpecCompiler.ToGfxObj(SpecValidator.Validate(new ForgeSpec { GfxObjs = [m.ToSpec(0x01000001, true, false)] }).GfxObjs[0]);
 
     [Fact]
-    public void A_300_polygon_part_builds_fast_with_a_bounded_depth_and_sound_invariants()
+    public void A_300_polygon_part_builds_with_a_bounded_depth_and_sound_invariants()
     {
         var m = new MeshBuilder().Box(new(-2, -2, 0), new(2, 2, 4), 7, 7, 7); // 294 quads
         m.Prism(new(0, 0, 4), 1, 1, 6);                                          // + 8
-        var stopwatch = Stopwatch.StartNew();
+        // How long this takes is measured by tools/AcShadow.Bench (ForgeBspBenchmarks), not asserted here.
         var gfx = Gfx(m);
-        stopwatch.Stop();
         Assert.True(gfx.PhysicsPolygons.Count >= 300);
-        Assert.True(stopwatch.ElapsedMilliseconds < 2000, $"{stopwatch.ElapsedMilliseconds} ms");
         Assert.Empty(BspInvariants.Check(gfx));
         Assert.InRange(BspInvariants.Depth(gfx.PhysicsBsp!), 2, PhysicsBspBuilder.MaxDepth);
     }
