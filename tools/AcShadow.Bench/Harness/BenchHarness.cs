@@ -89,15 +89,17 @@ public static class BenchHarness
         run(-1);
         var seconds = new List<double>();
         var peaks = new List<double>();
+        var cpu = new List<double>();
         for (var i = 0; i < options.Repetitions; i++)
         {
             var outcome = run(i);
             seconds.Add(outcome.Seconds);
             peaks.Add(outcome.PeakMiB);
+            if (double.IsFinite(outcome.CpuSeconds)) cpu.Add(outcome.CpuSeconds);
             log.Write(string.Create(CultureInfo.InvariantCulture, $" {outcome.Seconds:0.000}s"));
         }
         log.WriteLine();
-        return new Timing(name, size, jobs, seconds, peaks, how);
+        return new Timing(name, size, jobs, seconds, peaks, cpu, how);
     }
 
     /// <summary>The bench's own entry assembly, run again as a child process for the floor and naive workloads.</summary>

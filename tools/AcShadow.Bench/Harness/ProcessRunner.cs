@@ -4,15 +4,16 @@ using System.Globalization;
 namespace AcShadow.Bench.Harness;
 
 /// <summary>
-/// Runs a command as a whole process and measures its wall time and peak resident memory: through
-/// /usr/bin/time -f %M when the machine has it, else by polling /proc/PID/status VmHWM (which can miss
+/// Runs a command as a whole process and measures its wall time, peak resident memory and CPU time:
+/// through /usr/bin/time -f "%M %U %S" when the machine has it, else by polling /proc/PID/status VmHWM (which can miss
 /// a peak reached in the last few milliseconds).
 /// </summary>
 public static class ProcessRunner
 {
     private const string GnuTime = "/usr/bin/time";
 
-    public sealed record Outcome(double Seconds, double PeakMiB, string Stdout, string Stderr);
+    /// <summary>Wall seconds, peak resident MiB, and CPU seconds (user + system; NaN without /usr/bin/time).</summary>
+    public sealed record Outcome(double Seconds, double PeakMiB, double CpuSeconds, string Stdout, string Stderr);
 
     /// <summary>A .dll is run with the dotnet host, anything else directly.</summary>
     public static (string File, string[] Prefix) Command(string path) =>
@@ -29,7 +30,7 @@ public static class ProcessRunner
             RedirectStandardError = true,
             UseShellExecute = false,
         };
-        if (useTime) foreach (var a in new[] { "-f", "%M", "-o", memoryFile!, file }) info.ArgumentList.Add(a);
+        if (useTime) foreach (var a in new[] { "-f", "%M %U %S", "-o", memoryFile!, file }) info.ArgumentList.Add(a);
         foreach (var a in prefix.Concat(args)) info.ArgumentList.Add(a);
         info.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
 
@@ -44,15 +45,16 @@ public static class ProcessRunner
         var seconds = clock.Elapsed.TotalSeconds;
         if (process.ExitCode != 0)
             throw new InvalidOperationException($"{file} {string.Join(' ', prefix.Concat(args))} exited {process.ExitCode}: {stderr.Result.Trim()}");
-        double peakMiB;
+        double peakMiB, cpu = double.NaN;
         if (useTime)
         {
-            var text = File.ReadAllText(memoryFile!).Trim().Split('\n')[^1];
+            var fields = File.ReadAllText(memoryFile!).Trim().Split('\n')[^1].Split(' ');
             File.Delete(memoryFile!);
-            peakMiB = long.Parse(text, CultureInfo.InvariantCulture) / 1024.0;
+            peakMiB = long.Parse(fields[0], CultureInfo.InvariantCulture) / 1024.0;
+            cpu = double.Parse(fields[1], CultureInfo.InvariantCulture) + double.Parse(fields[2], CultureInfo.InvariantCulture);
         }
         else peakMiB = polledKb / 1024.0;
-        return new Outcome(seconds, peakMiB, stdout.Result, stderr.Result);
+        return new Outcome(seconds, peakMiB, cpu, stdout.Result, stderr.Result);
     }
 
     private static long VmHwmKb(int pid)
