@@ -7,8 +7,8 @@ namespace AcShadow.Bench.Harness;
 public sealed record Timing(string Name, string Size, int Jobs, IReadOnlyList<double> Seconds, IReadOnlyList<double> PeakMiB, IReadOnlyList<double> CpuSeconds, string How)
 {
     public double Median => MedianOf(Seconds);
-    public double Min => Seconds.Min();
-    public double Max => Seconds.Max();
+    public double Min => Seconds.Count == 0 ? double.NaN : Seconds.Min();
+    public double Max => Seconds.Count == 0 ? double.NaN : Seconds.Max();
     /// <summary>(max − min) / median: how noisy the runs were.</summary>
     public double Spread => Median > 0 ? (Max - Min) / Median : 0;
     public double PeakMedianMiB => PeakMiB.Count == 0 ? double.NaN : MedianOf(PeakMiB);
@@ -16,6 +16,7 @@ public sealed record Timing(string Name, string Size, int Jobs, IReadOnlyList<do
 
     public static double MedianOf(IReadOnlyList<double> values)
     {
+        if (values.Count == 0) return double.NaN;
         var sorted = values.Order().ToArray();
         var mid = sorted.Length / 2;
         return sorted.Length % 2 == 1 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
