@@ -25,7 +25,7 @@ public static class ShadowFileReader
         var diagnostics = Arr(root, "diagnostics").Select(d => new Diagnostic(Str(d, "code"), Str(d, "message"))).ToArray();
         var setup = Prop(root, "setup");
         return new ShadowShapeSet(setupId, policy,
-            new PlacementResolution(Str(placement, "requested"), Str(placement, "used"), null),
+            new PlacementResolution(Str(placement, "requested"), Str(placement, "used")),
             Float(root, "entityScale"), Prop(setup, "hasPhysicsBsp").GetBoolean(), shapes, diagnostics);
     }
 
