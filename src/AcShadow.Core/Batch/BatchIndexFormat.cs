@@ -12,6 +12,7 @@ public static class BatchIndexFormat
         OutputKind.Shadow => "shadow",
         OutputKind.Bsp => "bsp",
         OutputKind.Scene => "scene",
+        OutputKind.AcdreamGfxObj => "acdream",
         _ => throw new ArgumentOutOfRangeException(nameof(kind)),
     };
 }
