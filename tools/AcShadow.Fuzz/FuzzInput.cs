@@ -1,0 +1,7 @@
+namespace AcShadow.Fuzz;
+
+/// <summary>
+/// One case's dats (the portal dat and the cell dat its landblock scene reads), what was done to them,
+/// which Setup `dump` is asked for and which landblock (0xXXYY) `batch` exports.
+/// </summary>
+public sealed record FuzzInput(byte[] Portal, byte[] Cell, uint DumpSetup, uint Landblock, string Description);
