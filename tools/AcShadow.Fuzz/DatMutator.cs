@@ -4,12 +4,18 @@ namespace AcShadow.Fuzz;
 
 /// <summary>
 /// Turns (seed, case index) into one damaged pair of dats, deterministically. Every tenth case truncates a
-/// dat at a block boundary, walking the boundaries in turn so a campaign of a few hundred cases cuts at each
-/// one; the others apply one to three random mutations, aimed at the header, the directory, block chains or
-/// object fields as often as at random bytes.
+/// dat at a block boundary, taking the bases in turn and walking each one's boundaries in turn, so a few
+/// hundred cases per base cut at each one; the others apply one to three random mutations (to the first
+/// base three times in four), aimed at the header, the directory, block chains or object fields as often
+/// as at random bytes.
 /// </summary>
-public sealed class DatMutator(FuzzBase source)
+public sealed class DatMutator(IReadOnlyList<FuzzBase> bases)
 {
+    public DatMutator(FuzzBase source) : this([source]) { }
+
+    private static readonly float[] FloatLimits =
+        [float.NaN, float.PositiveInfinity, float.NegativeInfinity, float.MaxValue, float.MinValue, float.Epsilon, -0f, 1e30f, -1e30f, 1e-30f];
+
     private static readonly long[] Int32Limits =
         [0, 1, -1, 2, 0x7F, 0x80, 0xFF, 0x100, 0x7FFF, 0x8000, 0xFFFF, 0x10000, int.MaxValue, int.MinValue, 0x40000000, 63, 64, 1 << 20, (1 << 20) + 1];
 
@@ -18,19 +24,22 @@ public sealed class DatMutator(FuzzBase source)
     public FuzzInput Mutate(long seed, int caseIndex)
     {
         var random = new Random(CaseSeed(seed, caseIndex));
+        var truncation = caseIndex % 10 == 0;
+        var source = truncation ? bases[caseIndex / 10 % bases.Count] : bases[random.Next(4) > 0 || bases.Count == 1 ? 0 : random.Next(1, bases.Count)];
         var portal = (byte[])source.Portal.Clone();
         var cell = (byte[])source.Cell.Clone();
         var dumpSetup = source.SetupIds[random.Next(source.SetupIds.Count)];
         var notes = new List<string>();
-        if (caseIndex % 10 == 0)
+        if (truncation)
         {
             var boundaries = source.PortalLayout.BlockCount + 1 + source.CellLayout.BlockCount + 1;
-            var k = caseIndex / 10 % boundaries;
+            var turn = caseIndex / 10 / bases.Count;
+            var k = turn % boundaries;
             var inPortal = k <= source.PortalLayout.BlockCount;
             var layout = inPortal ? source.PortalLayout : source.CellLayout;
             var block = inPortal ? k : k - source.PortalLayout.BlockCount - 1;
             // At the boundary, and now and then a few bytes either side of it.
-            var cut = layout.BlockStart(block) + (caseIndex / 10 / boundaries % 3 == 2 ? random.Next(-4, 5) : 0);
+            var cut = layout.BlockStart(block) + (turn / boundaries % 3 == 2 ? random.Next(-4, 5) : 0);
             cut = Math.Clamp(cut, 0, layout.Length);
             if (inPortal) portal = portal[..cut]; else cell = cell[..cut];
             notes.Add($"{(inPortal ? "portal" : "cell")}: truncated to {cut} bytes (block boundary {block})");
@@ -47,7 +56,7 @@ public sealed class DatMutator(FuzzBase source)
                 notes.Add($"{(inPortal ? "portal" : "cell")}: {Apply(kind, bytes, layout, random)}");
             }
         }
-        return new FuzzInput(portal, cell, dumpSetup, source.Landblock, $"case {caseIndex} (seed {seed}): {string.Join("; ", notes)}");
+        return new FuzzInput(portal, cell, dumpSetup, source.Landblock, $"case {caseIndex} (seed {seed}, {source.Name}): {string.Join("; ", notes)}") { From = source };
     }
 
     /// <summary>A well-mixed 32-bit seed per case, the same on every machine (SplitMix64 finaliser).</summary>
@@ -184,7 +193,11 @@ public sealed class DatMutator(FuzzBase source)
         var width = random.Next(3) switch { 0 => 1, 1 => 2, _ => 4 };
         var offset = random.Next((int)obj.Size - width + 1);
         if (width == 4 && random.Next(2) == 0) offset &= ~3; // counts sit on 4-byte boundaries
-        var value = Limit(layout, random);
+        // Floats at their limits too: positions, radii and planes are floats, and NaN or infinity must
+        // come out as a diagnostic, never a crash or invalid JSON.
+        var value = width == 4 && random.Next(3) == 0
+            ? BitConverter.SingleToInt32Bits(FloatLimits[random.Next(FloatLimits.Length)])
+            : Limit(layout, random);
         var written = new byte[4];
         BinaryPrimitives.WriteInt32LittleEndian(written, unchecked((int)value));
         for (var i = 0; i < width; i++) bytes[layout.FileOffset(obj.Blocks, offset + i)] = written[i];

@@ -39,10 +39,10 @@ public static class FuzzCampaign
     public const int ExamplesPerSignature = 3;
 
     /// <param name="starting">Called with each case's index before it runs (a crash of the whole process can then be pinned on it).</param>
-    public static CampaignResult Run(FuzzBase source, CampaignOptions options, string scratch,
+    public static CampaignResult Run(IReadOnlyList<FuzzBase> bases, CampaignOptions options, string scratch,
         Action<int, CaseOutcome>? progress = null, Action<int>? starting = null)
     {
-        var mutator = new DatMutator(source);
+        var mutator = new DatMutator(bases);
         var runner = new CaseRunner(scratch, options.TimeLimit, options.MemoryLimitBytes);
         var failures = new List<FoundFailure>();
         var counts = new SortedDictionary<string, int>(StringComparer.Ordinal);

@@ -7,7 +7,7 @@ namespace AcShadow.Fuzz;
 /// of bytes that is not needed, then (when the damaged dat still opens) rebuilds it with only the objects
 /// the failure needs, then cuts off the blocks past what the failure needs.
 /// </summary>
-public sealed class InputMinimiser(FuzzBase source, CaseRunner runner)
+public sealed class InputMinimiser(CaseRunner runner)
 {
     private int _attempt;
 
@@ -15,8 +15,8 @@ public sealed class InputMinimiser(FuzzBase source, CaseRunner runner)
     {
         bool Fails(FuzzInput candidate) => runner.Run(candidate, $"minimise-{_attempt++}").Failure?.Signature == failure.Signature;
 
-        var portal = UndoRuns(input.Portal, source.Portal, p => Fails(input with { Portal = p }));
-        var cell = UndoRuns(input.Cell, source.Cell, c => Fails(input with { Portal = portal, Cell = c }));
+        var portal = input.From is { } original ? UndoRuns(input.Portal, original.Portal, p => Fails(input with { Portal = p })) : input.Portal;
+        var cell = input.From is { } intact ? UndoRuns(input.Cell, intact.Cell, c => Fails(input with { Portal = portal, Cell = c })) : input.Cell;
         portal = KeepNeededObjects(portal, p => Fails(input with { Portal = p, Cell = cell }));
         cell = KeepNeededObjects(cell, c => Fails(input with { Portal = portal, Cell = c }));
         portal = CutTail(portal, p => Fails(input with { Portal = p, Cell = cell }));

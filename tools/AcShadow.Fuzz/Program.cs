@@ -33,15 +33,15 @@ public static class Program
             }
         }
 
-        var scratch = Directory.CreateTempSubdirectory("acshadow-fuzz-").FullName;
+        var scratch = ScratchFolder.Create();
         try
         {
-            var source = FuzzBase.Sample();
+            var bases = FuzzBase.All();
             Console.WriteLine($"fuzz: seed {options.Seed}, cases {options.Start}..{options.Start + options.Cases - 1}, " +
                 $"time limit {options.TimeLimitSeconds:0.###} s, memory limit {options.MemoryLimitBytes >> 20} MiB per case");
             var step = Math.Max(1, options.Cases / 20);
             var done = 0;
-            var result = FuzzCampaign.Run(source, options, scratch, (index, outcome) =>
+            var result = FuzzCampaign.Run(bases, options, scratch, (index, outcome) =>
             {
                 if (outcome.Failure is { } f) Console.WriteLine($"FAIL case {index}: {f.Signature}");
                 if (++done % step == 0) Console.WriteLine($"  {done}/{options.Cases} cases");
@@ -49,7 +49,7 @@ public static class Program
             Print(result);
             if (save is not null && result.Failures.Count > 0)
             {
-                var minimiser = new InputMinimiser(source, new CaseRunner(scratch, options.TimeLimit, options.MemoryLimitBytes));
+                var minimiser = new InputMinimiser(new CaseRunner(scratch, options.TimeLimit, options.MemoryLimitBytes));
                 foreach (var group in result.Failures.GroupBy(f => f.Failure.Signature))
                 {
                     var (found, small) = group

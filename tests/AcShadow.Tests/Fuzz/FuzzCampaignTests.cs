@@ -15,9 +15,17 @@ public class FuzzCampaignTests
     [Fact]
     public void A_fixed_seed_campaign_of_2000_damaged_dats_finds_no_failure()
     {
-        using var scratch = new Support.TempDir();
-        // A generous time limit: the suite runs other tests beside this one on two shared cores.
-        var result = FuzzCampaign.Run(FuzzBase.Sample(), new CampaignOptions(Seed, Cases, TimeLimitSeconds: 30), scratch.Path);
+        var scratch = ScratchFolder.Create();
+        CampaignResult result;
+        try
+        {
+            // A generous time limit: the suite runs other tests beside this one on two shared cores.
+            result = FuzzCampaign.Run(FuzzBase.All(), new CampaignOptions(Seed, Cases, TimeLimitSeconds: 30), scratch);
+        }
+        finally
+        {
+            Directory.Delete(scratch, recursive: true);
+        }
 
         Assert.Equal(Cases, result.Cases);
         Assert.True(result.FailedCases == 0, string.Join("\n", result.Failures.Select(f =>
@@ -31,7 +39,7 @@ public class FuzzCampaignTests
     [Fact]
     public void The_same_seed_damages_the_dats_the_same_way()
     {
-        var mutator = new DatMutator(FuzzBase.Sample());
+        var mutator = new DatMutator(FuzzBase.All());
         for (var i = 0; i < 50; i++)
         {
             var a = mutator.Mutate(Seed, i);
@@ -42,21 +50,33 @@ public class FuzzCampaignTests
         }
     }
 
-    [Fact]
-    public void Truncation_cases_cut_at_every_block_boundary_of_both_dats()
+    [Theory]
+    [InlineData(0, Cases)]      // the sample: every boundary within CI's campaign
+    [InlineData(1, 4 * Cases)]  // the two-level directory has twice the blocks: within the long campaign
+    public void Truncation_cases_cut_at_every_block_boundary_of_both_dats(int baseIndex, int cases)
     {
-        var source = FuzzBase.Sample();
-        var mutator = new DatMutator(source);
+        var bases = FuzzBase.All();
+        var source = bases[baseIndex];
+        var mutator = new DatMutator(bases);
         var portalCuts = new HashSet<int>();
         var cellCuts = new HashSet<int>();
-        for (var i = 0; i < Cases; i += 10)
+        for (var i = 0; i < cases; i += 10)
         {
             var input = mutator.Mutate(Seed, i);
+            if (input.From != source) continue;
             if (input.Portal.Length < source.Portal.Length) portalCuts.Add(input.Portal.Length);
             if (input.Cell.Length < source.Cell.Length) cellCuts.Add(input.Cell.Length);
         }
         for (var b = 0; b < source.PortalLayout.BlockCount; b++) Assert.Contains(source.PortalLayout.BlockStart(b), portalCuts);
         for (var b = 0; b < source.CellLayout.BlockCount; b++) Assert.Contains(source.CellLayout.BlockStart(b), cellCuts);
+    }
+
+    [Fact]
+    public void The_second_base_has_a_two_level_directory()
+    {
+        var deep = FuzzBase.SampleWithDeepDirectory();
+        Assert.True(deep.PortalLayout.NodeChains.Count > 1, $"{deep.PortalLayout.NodeChains.Count} B-tree node(s)");
+        Assert.Equal(FuzzBase.Sample().SetupIds, deep.SetupIds);
     }
 
     [Fact]
