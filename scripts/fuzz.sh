@@ -11,7 +11,10 @@ unset ACSHADOW_DAT
 seed="${1:-1}"
 cases="${2:-50000}"
 limit="${3:-10}"
-dotnet build tools/AcShadow.Fuzz -c Release --nologo -v quiet -clp:ErrorsOnly || exit 2
+if ! build_log="$(dotnet build tools/AcShadow.Fuzz -c Release --nologo -v quiet -clp:ErrorsOnly 2>&1)"; then
+  echo "$build_log" >&2
+  exit 2
+fi
 trace="$(mktemp "${TMPDIR:-/tmp}/acshadow-fuzz-trace.XXXXXX")"
 trap 'rm -f "$trace"' EXIT
 dotnet tools/AcShadow.Fuzz/bin/Release/net10.0/acshadow-fuzz.dll \

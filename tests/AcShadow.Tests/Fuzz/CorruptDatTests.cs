@@ -106,6 +106,30 @@ public class CorruptDatTests
     }
 
     [Fact]
+    public void Any_exception_met_reading_an_object_leaves_the_dat_source_as_a_corrupt_dat_naming_the_object()
+    {
+        var (dat, _) = OneSetupDat();
+        var stream = new StreamThatFailsOnDemand(dat);
+        using var db = DatDatabase.Open(stream, "client_portal.dat");
+        stream.Failure = new IndexOutOfRangeException("simulated");
+
+        var e = Assert.Throws<DatFormatException>(() => db.ReadSetup(Door));
+
+        Assert.Equal("corrupt dat: Setup 0x020019FF in client_portal.dat: IndexOutOfRangeException: simulated", e.Message);
+        Assert.Equal(Door, e.ObjectId);
+        Assert.IsType<IndexOutOfRangeException>(e.InnerException);
+    }
+
+    private sealed class StreamThatFailsOnDemand(byte[] bytes) : MemoryStream(bytes, writable: false)
+    {
+        public Exception? Failure { get; set; }
+
+        public override int Read(Span<byte> buffer) => Failure is { } f ? throw f : base.Read(buffer);
+
+        public override int Read(byte[] buffer, int offset, int count) => Failure is { } f ? throw f : base.Read(buffer, offset, count);
+    }
+
+    [Fact]
     public void Dump_on_a_damaged_setup_exits_3_saying_corrupt_dat_and_the_id()
     {
         var (dat, entryAt) = OneSetupDat();
