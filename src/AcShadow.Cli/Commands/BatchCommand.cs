@@ -26,10 +26,11 @@ public static class BatchCommand
         var jobs = SelectionOptions.Jobs();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var incremental = new Option<bool>("--incremental") { Description = "leave files whose content would not change untouched" };
+        var format = FormatOption.Create();
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
         {
             outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            policy, scale, jobs, quiet, incremental,
+            policy, scale, jobs, quiet, incremental, format,
         };
         command.SetAction(parse => Run(console,
             selection.Parse(parse, defaultToAll: false),
@@ -39,12 +40,13 @@ public static class BatchCommand
             new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))),
             SelectionOptions.ParseJobs(parse.GetValue(jobs)),
             parse.GetValue(quiet),
-            parse.GetValue(incremental)));
+            parse.GetValue(incremental),
+            FormatOption.Parse(parse.GetValue(format))));
         return command;
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
-        ShapeBuildOptions options, int jobs, bool quiet, bool incremental)
+        ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
         if (File.Exists(outDir))
@@ -52,7 +54,10 @@ public static class BatchCommand
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
         var engine = new ExportEngine(dat.Portal, options);
-        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection);
+        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
+        {
+            Formats = formats,
+        };
 
         var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet, "setups");
         BatchResult result;

@@ -47,22 +47,21 @@ public static class BatchRunner
         }
         foreach (var id in plan.Skipped.Select(s => s.Id)) problems.TryAdd(id, SkippedItem.NotInDat);
 
-        var scenes = 0;
         if (plan.Scene is { } scene)
         {
             var sceneExport = SceneExporter.Export(scene, engine, exports, problems);
             files[sceneExport.SceneFile.RelativePath] = sceneExport.SceneFile;
             foreach (var file in sceneExport.BspFiles) files.TryAdd(file.RelativePath, file);
             skipped.AddRange(sceneExport.Skipped);
-            scenes = 1;
             progress?.Invoke(new BatchProgress(Interlocked.Increment(ref done), total));
         }
 
-        var ordered = files.Values.ToArray();
+        var ordered = OutputFormatSelection.Apply(files.Values, inputs.Formats);
         var sortedSkipped = skipped.OrderBy(s => s.Id).ToArray();
         var index = BatchIndexWriter.Write(inputs, ordered, sortedSkipped);
         return new BatchResult(ordered, index, sortedSkipped, exports.Count,
-            ordered.Count(f => f.Kind == OutputKind.Bsp), scenes, diagnostics);
+            ordered.Where(f => f.Kind is OutputKind.Bsp or OutputKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
+            ordered.Count(f => f.Kind == OutputKind.Scene), diagnostics);
     }
 
     /// <summary>A Setup that cannot be decoded is skipped with the reason; other Setups go on.</summary>

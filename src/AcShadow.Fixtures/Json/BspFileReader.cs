@@ -15,8 +15,7 @@ public static class BspFileReader
     {
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
-        var format = Str(root, "format");
-        if (format != BspFileFormat.Format) throw new FormatException($"format is \"{format}\", expected \"{BspFileFormat.Format}\"");
+        AcShadow.Fixtures.FormatCheck.Require(root, BspFileFormat.Format, "BSP file");
         if (!JsonIds.TryParse(Str(root, "gfxObjId"), out var id)) throw new FormatException("gfxObjId is not a hex id");
 
         var vertices = Arr(root, "vertices").Select(v => new BspVertex(Int(v, "id"), Vec(Prop(v, "position")))).ToArray();
