@@ -58,6 +58,7 @@ public static class ChartCommand
         if (File.Exists(outDir))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
+        OutputFolder.Prepare(outDir);
         // Times from unoptimised code are several times slower and would mislead the speed axis.
         if (typeof(ChartRunner).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
@@ -88,6 +89,7 @@ public static class ChartCommand
 
         long bytes = 0;
         var files = ChartFiles.Render(report);
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
         foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
 
         var w = console.Out;
