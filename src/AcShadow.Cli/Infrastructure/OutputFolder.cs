@@ -93,11 +93,15 @@ public static class OutputFolder
         try
         {
             Directory.CreateDirectory(Path.GetDirectoryName(target)!);
-            File.WriteAllBytes(temp, content);
+            // Not File.WriteAllBytes: it preallocates the length first, and a file the file system cannot
+            // hold then fails as an ArgumentException instead of the write's own I/O error.
+            using (var stream = new FileStream(temp, FileMode.Create, FileAccess.Write, FileShare.None))
+                stream.Write(content);
             File.Move(temp, target, overwrite: true);
             return content.LongLength;
         }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException)
         {
             TryDelete(temp);
             throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
