@@ -10,7 +10,6 @@ public static class DatIdRanges
     private static readonly Dictionary<uint, string> PortalTypes = new()
     {
         [0x01] = "GfxObj",
-        [0x02] = "Setup",
         [0x03] = "Animation",
         [0x04] = "Palette",
         [0x05] = "SurfaceTexture",
@@ -30,7 +29,10 @@ public static class DatIdRanges
         [0x34] = "PhysicsScriptTable",
     };
 
-    /// <summary>"a GfxObj id", "a LandBlockInfo id (a cell dat object)", … or null when the range names nothing known.</summary>
+    /// <summary>
+    /// "a GfxObj id", "a LandBlockInfo id (a cell dat object)", … or null when the range names nothing
+    /// known. Setups are not named: the caller says what a Setup id must be.
+    /// </summary>
     public static string? Describe(uint id)
     {
         if (PortalTypes.TryGetValue(id >> 24, out var name)) return $"a {name} id";
