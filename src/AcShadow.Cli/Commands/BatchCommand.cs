@@ -6,6 +6,7 @@ using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 
 namespace AcShadow.Cli.Commands;
@@ -25,11 +26,12 @@ public static class BatchCommand
         var scale = CommonOptions.Scale();
         var jobs = SelectionOptions.Jobs();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
-        var incremental = new Option<bool>("--incremental") { Description = "skip Setups whose dat entries did not change since the last run into DIR, and leave files whose content would not change untouched" };
+        var incremental = new Option<bool>("--incremental") { Description = "skip Setups whose dat bytes (and their parts') did not change since the last --incremental run into DIR, and leave files whose content would not change untouched" };
+        var format = FormatOption.Create();
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
         {
             outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            policy, scale, jobs, quiet, incremental,
+            policy, scale, jobs, quiet, incremental, format,
         };
         command.SetAction(parse => Run(console,
             selection.Parse(parse, defaultToAll: false),
@@ -39,23 +41,28 @@ public static class BatchCommand
             new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))),
             SelectionOptions.ParseJobs(parse.GetValue(jobs)),
             parse.GetValue(quiet),
-            parse.GetValue(incremental)));
+            parse.GetValue(incremental),
+            FormatOption.Parse(parse.GetValue(format))));
         return command;
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
-        ShapeBuildOptions options, int jobs, bool quiet, bool incremental)
+        ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
         if (File.Exists(outDir))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
-        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection);
+        OutputFolder.Prepare(outDir);
+        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
+        {
+            Formats = formats,
+        };
+        RefuseForeignFiles(outDir, plan);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         var source = new BoundedDatSource(dat.Portal.Archive, dat.Portal.Info);
-        var toolKey = IncrementalState.ToolKey(options);
-        var reuse = new BatchReuse(incremental ? ReadState(outDir) : null, toolKey,
+        var reuse = new BatchReuse(incremental ? ReadState(outDir) : null, IncrementalState.ToolKey(options, formats),
             dat.Portal.Archive.ReadObjectBytes,
             file => HasSize(outDir, file));
 
@@ -106,6 +113,37 @@ public static class BatchCommand
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wall time {clock.Elapsed.TotalSeconds:0.000} s with {jobs} job(s)"));
         return ExitCodes.Ok;
+    }
+
+    /// <summary>
+    /// Files stream to disk as they are made, so the check that no file acshadow does not own gets replaced
+    /// runs first, over what is already there: every file in the places a batch writes (the planned Setups'
+    /// shadow files, gfxobjs/, scene.json, index.json, incremental.json) that the folder's index.json does
+    /// not list must carry the signature of the acshadow format its name stands for.
+    /// </summary>
+    private static void RefuseForeignFiles(string outDir, BatchPlan plan)
+    {
+        var listed = OutputFolder.ListedByIndex(outDir);
+        var candidates = new List<(string Path, byte[] Head)>();
+        void Consider(string relative, string format)
+        {
+            if (!listed.Contains(relative) && (File.Exists(Path.Combine(outDir, relative)) || Directory.Exists(Path.Combine(outDir, relative))))
+                candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes($"{{\n  \"format\": \"{format}\",\n")));
+        }
+        foreach (var setup in plan.Setups) Consider(ShadowFileFormat.PathFor(setup.Id), ShadowFileFormat.Format);
+        var gfxobjs = Path.Combine(outDir, "gfxobjs");
+        if (Directory.Exists(gfxobjs))
+            foreach (var file in Directory.EnumerateFiles(gfxobjs, "*.json").Order(StringComparer.Ordinal))
+            {
+                var relative = "gfxobjs/" + Path.GetFileName(file);
+                if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, BspFileFormat.Format);
+                else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && !listed.Contains(relative))
+                    candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
+            }
+        if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
+        Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
+        Consider(IncrementalState.Path, IncrementalState.Format);
+        OutputFolder.RefuseForeignFiles(outDir, candidates, listed);
     }
 
     /// <summary>Whether a file the previous run wrote is still there with the size it recorded.</summary>

@@ -19,19 +19,21 @@ public static class DumpCommand
         var outDir = CommonOptions.Out(DefaultOut);
         var policy = CommonOptions.Policy();
         var scale = CommonOptions.Scale();
+        var format = FormatOption.Create();
         var command = new Command("dump", "Write one Setup's ShadowShape JSON and the BSP polygon dumps its shapes use")
         {
-            setup, dat, outDir, policy, scale,
+            setup, dat, outDir, policy, scale, format,
         };
         command.SetAction(parse => Run(console,
             ArgumentParsing.SetupId(parse.GetValue(setup)!),
             parse.GetValue(dat),
             parse.GetValue(outDir)!,
-            new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale)))));
+            new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))),
+            FormatOption.Parse(parse.GetValue(format))));
         return command;
     }
 
-    private static int Run(CliConsole console, uint setupId, string? datPath, string outDir, ShapeBuildOptions options)
+    private static int Run(CliConsole console, uint setupId, string? datPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
         using var dat = DatLocator.Open(datPath, null, console);
@@ -40,8 +42,11 @@ public static class DumpCommand
             ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(setupId)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
 
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(setupId), export.Diagnostics);
+        var files = OutputFormatSelection.Apply(export.Files, formats).ToArray();
+        OutputFolder.Prepare(outDir);
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
         long bytes = 0;
-        foreach (var file in export.Files)
+        foreach (var file in files)
         {
             bytes += OutputFolder.WriteAtomically(outDir, file);
             console.Out.WriteLine($"wrote {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes)");
@@ -49,7 +54,7 @@ public static class DumpCommand
         var set = export.Set;
         console.Out.WriteLine(
             $"dump {JsonIds.Format(setupId)}: {set.Shapes.Count} shape(s) under {set.Policy.Name()} " +
-            $"(placement {set.Placement.Used}), {export.BspFiles.Count} BSP dump(s), {export.Diagnostics.Count} diagnostic(s), " +
+            $"(placement {set.Placement.Used}), {export.BspFiles.Count} BSP dump(s){(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, {export.Diagnostics.Count} diagnostic(s), " +
             $"{bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
         return ExitCodes.Ok;
     }

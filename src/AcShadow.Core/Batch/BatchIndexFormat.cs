@@ -2,16 +2,17 @@ using AcShadow.Core.Export;
 
 namespace AcShadow.Core.Batch;
 
-/// <summary>Names of index.json (docs/batch.md, schemas/acshadow.index-1.schema.json).</summary>
+/// <summary>Names of index.json (docs/formats.md, schemas/acshadow.index-1.schema.json).</summary>
 public static class BatchIndexFormat
 {
-    public const string Format = "acshadow.index/1";
+    public const string Format = AcShadow.Fixtures.FileFormats.Index;
 
     public static string KindName(OutputKind kind) => kind switch
     {
         OutputKind.Shadow => "shadow",
         OutputKind.Bsp => "bsp",
         OutputKind.Scene => "scene",
+        OutputKind.AcdreamGfxObj => "acdream",
         _ => throw new ArgumentOutOfRangeException(nameof(kind)),
     };
 }

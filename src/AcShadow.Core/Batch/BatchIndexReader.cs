@@ -1,5 +1,6 @@
 using System.Text.Json;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 
@@ -35,7 +36,10 @@ public static class BatchIndexReader
                 cell.ValueKind == JsonValueKind.Null ? null : Dat(cell, "$.inputs.cellDat"),
                 policy,
                 scale.GetSingle(),
-                Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"));
+                Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"))
+            {
+                Formats = Formats(inputs),
+            };
             var files = Member(root, "files", "$");
             if (files.ValueKind != JsonValueKind.Array) throw new FormatException("$.files is not an array");
             var list = files.EnumerateArray().Select((f, i) =>
@@ -45,6 +49,14 @@ public static class BatchIndexReader
             }).ToArray();
             return new BatchIndex(result, list);
         }
+    }
+
+    private static OutputFormats Formats(JsonElement inputs)
+    {
+        if (!inputs.TryGetProperty("formats", out var f)) return OutputFormats.Canonical;
+        var text = f.ValueKind == JsonValueKind.String ? f.GetString() : null;
+        return OutputFormatNames.TryParse(text, out var formats) ? formats
+            : throw new FormatException($"$.inputs.formats \"{text}\" is not canonical, acdream or both");
     }
 
     private static DatSourceInfo Dat(JsonElement e, string at)

@@ -32,7 +32,7 @@ public static class BatchIndexWriter
     private static JsonObj Inputs(BatchInputs inputs)
     {
         var selection = inputs.Selection;
-        return new JsonObj()
+        var json = new JsonObj()
             .Add("dat", Dat(inputs.Dat))
             .Add("cellDat", inputs.CellDat is { } cell ? Dat(cell) : JsonNull.Value)
             .Add("policy", inputs.Policy.Name())
@@ -44,6 +44,7 @@ public static class BatchIndexWriter
                     ? new JsonObj().Add("name", list.Name).Add("ids", JsonArr.Of(list.Ids.Select(JsonIds.Format)))
                     : JsonNull.Value)
                 .Add("landblock", selection.Landblock is { } lb ? JsonIds.Format(lb) : null));
+        return inputs.Formats == OutputFormats.Canonical ? json : json.Add("formats", inputs.Formats.Name());
     }
 
     internal static JsonObj Dat(DatSourceInfo info) => new JsonObj()

@@ -1,6 +1,7 @@
 using System.Collections.Concurrent;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 
@@ -9,9 +10,9 @@ namespace AcShadow.Core.Batch;
 /// <summary>
 /// Runs a <see cref="BatchPlan"/> through the one <see cref="ExportEngine"/>: Setups in parallel, each
 /// file handed to the caller's writer as soon as it is made (each path once; a shared GfxObj's dump by
-/// whichever Setup needs it first), then the scene, then index.json from the files' entries, sorted by
-/// path, so the output never depends on scheduling. Only entries are kept, never file bytes: memory
-/// stays bounded whatever the dat's size. Pure: the caller writes.
+/// whichever Setup needs it first), in the formats the inputs ask for, then the scene, then index.json
+/// from the files' entries, sorted by path, so the output never depends on scheduling. Only entries are
+/// kept, never file bytes: memory stays bounded whatever the dat's size. Pure: the caller writes.
 /// </summary>
 public static class BatchRunner
 {
@@ -31,14 +32,24 @@ public static class BatchRunner
         Action<OutputFile> write, BatchReuse? reuse, Action<BatchProgress>? progress = null, CancellationToken cancellation = default)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(jobs, 1);
-        var engine = new ExportEngine(dat, options, write);
+        IReadOnlyList<FileEntry> Emit(OutputFile canonical)
+        {
+            var entries = new List<FileEntry>(2);
+            foreach (var file in OutputFormatSelection.For(canonical, inputs.Formats))
+            {
+                write(file);
+                entries.Add(FileEntry.Of(file));
+            }
+            return entries;
+        }
+        var engine = new ExportEngine(dat, options, Emit);
         var total = plan.Setups.Count + (plan.Scene is null ? 0 : 1);
         var done = 0;
         var results = new SetupOutcome[plan.Setups.Count];
         Parallel.For(0, plan.Setups.Count, new ParallelOptions { MaxDegreeOfParallelism = jobs, CancellationToken = cancellation }, i =>
         {
             var id = plan.Setups[i].Id;
-            results[i] = reuse?.TryReuse(id) ?? ExportOne(engine, id, write, reuse);
+            results[i] = reuse?.TryReuse(id) ?? ExportOne(engine, id, Emit, reuse);
             progress?.Invoke(new BatchProgress(Interlocked.Increment(ref done), total));
         });
 
@@ -59,7 +70,7 @@ public static class BatchRunner
                 continue;
             }
             foreach (var file in outcome.Files) files[file.RelativePath] = file;
-            setupFiles[planned.Id] = outcome.Files[0].RelativePath;
+            setupFiles[planned.Id] = ShadowFileFormat.PathFor(planned.Id);
             diagnostics += outcome.Record.Diagnostics;
             if (outcome.Record.Diagnostics > 0) withDiagnostics++;
             if (outcome.Reused) reused++;
@@ -67,28 +78,26 @@ public static class BatchRunner
         }
         foreach (var id in plan.Skipped.Select(s => s.Id)) problems.TryAdd(id, SkippedItem.NotInDat);
 
-        var scenes = 0;
         if (plan.Scene is { } scene)
         {
             var sceneExport = SceneExporter.Export(scene, engine, setupFiles, problems);
-            write(sceneExport.SceneFile);
-            files[sceneExport.SceneFile.RelativePath] = FileEntry.Of(sceneExport.SceneFile);
+            foreach (var entry in Emit(sceneExport.SceneFile)) files[entry.RelativePath] = entry;
             foreach (var entry in sceneExport.BspEntries) files.TryAdd(entry.RelativePath, entry);
             skipped.AddRange(sceneExport.Skipped);
-            scenes = 1;
             progress?.Invoke(new BatchProgress(Interlocked.Increment(ref done), total));
         }
 
         var ordered = files.Values.ToArray();
         var sortedSkipped = skipped.OrderBy(s => s.Id).ToArray();
         var index = BatchIndexWriter.Write(inputs, ordered, sortedSkipped);
-        var state = new IncrementalState(IncrementalState.ToolKey(options), records);
-        return new BatchSummary(ordered, index, sortedSkipped, records.Count, ordered.Count(f => f.Kind == OutputKind.Bsp), scenes,
-            new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
+        var state = new IncrementalState(IncrementalState.ToolKey(options, inputs.Formats), records);
+        return new BatchSummary(ordered, index, sortedSkipped, records.Count,
+            ordered.Where(f => f.Kind is OutputKind.Bsp or OutputKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
+            ordered.Count(f => f.Kind == OutputKind.Scene), new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
     }
 
     /// <summary>A Setup that cannot be decoded is skipped with the reason; other Setups go on.</summary>
-    private static SetupOutcome ExportOne(ExportEngine engine, uint id, Action<OutputFile> write, BatchReuse? reuse)
+    private static SetupOutcome ExportOne(ExportEngine engine, uint id, Func<OutputFile, IReadOnlyList<FileEntry>> emit, BatchReuse? reuse)
     {
         SetupExport? export;
         try
@@ -100,8 +109,7 @@ public static class BatchRunner
             return SetupOutcome.Failed($"unreadable: {e.Message}");
         }
         if (export is null) return SetupOutcome.Failed(SkippedItem.NotInDat);
-        write(export.Shadow);
-        FileEntry[] files = [FileEntry.Of(export.Shadow), .. export.BspEntries];
+        FileEntry[] files = [.. emit(export.Shadow), .. export.BspEntries];
         var parts = export.Setup.Parts.Distinct().Order().ToArray();
         var fingerprint = reuse?.Fingerprint(id, parts) ?? "";
         return new SetupOutcome(null, files, new IncrementalSetup(id, fingerprint, parts, export.Diagnostics.Count, files), false);

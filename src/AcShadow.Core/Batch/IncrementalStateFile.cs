@@ -48,7 +48,6 @@ public static class IncrementalStateFile
                     f.GetProperty("polygons").GetInt32(),
                     f.GetProperty("bytes").GetInt64(),
                     f.GetProperty("sha256").GetString()!)).ToArray())).ToArray();
-            if (setups.Any(s => s.Files.Count == 0 || s.Files[0].Kind != OutputKind.Shadow)) return null;
             return new IncrementalState(root.GetProperty("tool").GetString()!, setups);
         }
         catch (Exception e) when (e is JsonException or InvalidOperationException or KeyNotFoundException or FormatException)
@@ -60,11 +59,7 @@ public static class IncrementalStateFile
     private static uint Id(JsonElement e) =>
         JsonIds.TryParse(e.GetString(), out var id) ? id : throw new FormatException($"not an id: {e}");
 
-    private static OutputKind Kind(string? name) => name switch
-    {
-        "shadow" => OutputKind.Shadow,
-        "bsp" => OutputKind.Bsp,
-        "scene" => OutputKind.Scene,
-        _ => throw new FormatException($"not a file kind: {name}"),
-    };
+    private static OutputKind Kind(string? name) =>
+        Enum.GetValues<OutputKind>().Where(k => BatchIndexFormat.KindName(k) == name).Select(k => (OutputKind?)k).FirstOrDefault()
+        ?? throw new FormatException($"not a file kind: {name}");
 }

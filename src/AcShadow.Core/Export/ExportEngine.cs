@@ -12,11 +12,11 @@ namespace AcShadow.Core.Export;
 /// however many Setups share it. Thread-safe.
 /// </summary>
 /// <param name="bspSink">
-/// When given, each BSP dump is handed to it once, as soon as it is made, and the engine keeps only its
-/// <see cref="FileEntry"/>: a batch streams its files and its memory does not grow with the dat. Without
-/// it the engine keeps every dump's bytes and <see cref="SetupExport.BspFiles"/> holds them.
+/// When given, each BSP dump is handed to it once, as soon as it is made, and the engine keeps only the
+/// entries of the files the sink wrote for it: a batch streams its files and its memory does not grow with
+/// the dat. Without it the engine keeps every dump's bytes and <see cref="SetupExport.BspFiles"/> holds them.
 /// </param>
-public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Action<OutputFile>? bspSink = null)
+public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func<OutputFile, IReadOnlyList<FileEntry>>? bspSink = null)
 {
     private readonly ConcurrentDictionary<uint, Lazy<BspDumpResult>> _bsp = new();
 
@@ -39,7 +39,7 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Acti
         {
             var dump = ExportGfxObj(gfxId);
             if (dump.File is not null) bspFiles.Add(dump.File);
-            if (dump.Entry is not null) bspEntries.Add(dump.Entry);
+            bspEntries.AddRange(dump.Entries);
             diagnostics.AddRange(dump.Diagnostics);
         }
         return new SetupExport(setup, set, shadow, bspFiles, bspEntries, diagnostics);
@@ -58,12 +58,11 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Acti
     private BspDumpResult MakeBsp(uint id)
     {
         var dump = ExtractBsp(id);
-        if (dump is null) return new BspDumpResult(null, null, []);
+        if (dump is null) return new BspDumpResult(null, null, [], []);
         var file = new OutputFile(BspFileFormat.PathFor(id), OutputKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count);
         var diagnostics = dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray();
-        var entry = FileEntry.Of(file);
-        if (bspSink is null) return new BspDumpResult(file, entry, diagnostics);
-        bspSink(file);
-        return new BspDumpResult(null, entry, diagnostics);
+        return bspSink is null
+            ? new BspDumpResult(file, file.RelativePath, [FileEntry.Of(file)], diagnostics)
+            : new BspDumpResult(null, file.RelativePath, bspSink(file), diagnostics);
     }
 }

@@ -5,6 +5,7 @@ public enum OutputKind
     Shadow,
     Bsp,
     Scene,
+    AcdreamGfxObj,
 }
 
 /// <summary>One file of an export, in memory: where it goes (relative, '/' separated), what it is, its bytes.</summary>

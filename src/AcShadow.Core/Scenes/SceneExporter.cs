@@ -48,7 +48,7 @@ public static class SceneExporter
         var file = new OutputFile(SceneFileFormat.Path, OutputKind.Scene, scene.LandBlockInfoId,
             CanonicalJsonWriter.WriteUtf8(json), 0, 0);
         return new SceneExport(file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
-            bspFiles.Values.Select(d => d.Entry!).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
+            bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
     }
 
     private static (JsonObj Json, bool Resolved) Describe(SceneObject placed, LandblockScene scene, ExportEngine engine,
@@ -120,8 +120,8 @@ public static class SceneExporter
         diagnostics.AddRange(set.Diagnostics);
         var dump = engine.ExportGfxObj(id);
         diagnostics.AddRange(dump.Diagnostics);
-        if (dump.Entry is not null) bspFiles[dump.Entry.RelativePath] = dump;
-        return (dump.Entry?.RelativePath, BareGfxObjShape.ShapesJson(gfx, set));
+        if (dump.Path is not null) bspFiles[dump.Path] = dump;
+        return (dump.Path, BareGfxObjShape.ShapesJson(gfx, set));
     }
 
     private static JsonObj FrameJson(JsonArr origin, Frame frame) =>

@@ -2,10 +2,10 @@ using AcShadow.Core.Json;
 
 namespace AcShadow.Core.Scenes;
 
-/// <summary>Names of the scene file (docs/batch.md, schemas/acshadow.scene-1.schema.json).</summary>
+/// <summary>Names of the scene file (docs/formats.md, schemas/acshadow.scene-1.schema.json).</summary>
 public static class SceneFileFormat
 {
-    public const string Format = "acshadow.scene/1";
+    public const string Format = AcShadow.Fixtures.FileFormats.Scene;
 
     /// <summary>
     /// The scene file's path inside an output folder: one run describes at most one landblock, as it writes

@@ -10,12 +10,15 @@ namespace AcShadow.Core.Shapes;
 /// </summary>
 public static class PlacementResolver
 {
-    public static PlacementResolution Resolve(Setup setup, ShapePolicy policy)
+    public static PlacementFrame? Choose(Setup setup, ShapePolicy policy)
     {
-        var requested = Placement.Name(Placement.Resting);
         var frame = setup.FindPlacement(Placement.Resting) ?? setup.FindPlacement(Placement.Default);
         if (frame is null && policy == ShapePolicy.Union && setup.PlacementFrames.Count > 0)
             frame = setup.PlacementFrames[0];
-        return new PlacementResolution(requested, frame?.Name ?? PlacementResolution.NoneName, frame);
+        return frame;
     }
+
+    /// <summary>What the output files record about the choice (the frame itself stays in the dat model).</summary>
+    public static PlacementResolution Describe(PlacementFrame? frame) =>
+        new(Placement.Name(Placement.Resting), frame?.Name ?? PlacementResolution.NoneName);
 }

@@ -15,8 +15,14 @@ public static class ShadowShapeBuilder
     {
         var diagnostics = new List<Diagnostic>();
         var scale = options.EntityScale;
-        var placement = PlacementResolver.Resolve(setup, options.Policy);
+        var placementFrame = PlacementResolver.Choose(setup, options.Policy);
+        var placement = PlacementResolver.Describe(placementFrame);
         var parts = LookUpParts(setup, gfxObjs, diagnostics);
+        // The dat stores exactly NumParts frames per placement; a source that does not is reported here,
+        // and a part without a frame is reported where it is skipped (no-pose).
+        if (placementFrame is { } used && used.Frames.Count != parts.Length)
+            diagnostics.Add(new(DiagnosticCodes.FrameCount,
+                $"placement {used.Name} has {used.Frames.Count} frame(s) for {parts.Length} part(s): {(used.Frames.Count > parts.Length ? "the extra frames are ignored" : "parts past the last frame get no pose")}"));
         var partsHaveBsp = parts.Any(p => p?.HasPhysics == true);
 
         // CPartArray::CacheHasPhysicsBSP computes the state from the parts; Setup.Flags' bit is not read.
@@ -27,8 +33,8 @@ public static class ShadowShapeBuilder
 
         var shapes = options.Policy switch
         {
-            ShapePolicy.Retail => BuildRetail(setup, parts, partsHaveBsp, placement, scale, diagnostics),
-            ShapePolicy.Union => BuildUnion(setup, parts, placement, scale, diagnostics),
+            ShapePolicy.Retail => BuildRetail(setup, parts, partsHaveBsp, placementFrame, scale, diagnostics),
+            ShapePolicy.Union => BuildUnion(setup, parts, placementFrame, scale, diagnostics),
             _ => throw new ArgumentOutOfRangeException(nameof(options)),
         };
         if (shapes.Count == 0)
@@ -62,7 +68,7 @@ public static class ShadowShapeBuilder
     /// CPhysicsObj::FindObjCollisions picks one family: parts' BSPs when any part has one, else
     /// CylSpheres, else Spheres.
     /// </summary>
-    private static List<ShadowShape> BuildRetail(Setup setup, GfxObj?[] parts, bool partsHaveBsp, PlacementResolution placement, float scale, List<Diagnostic> diagnostics)
+    private static List<ShadowShape> BuildRetail(Setup setup, GfxObj?[] parts, bool partsHaveBsp, PlacementFrame? placement, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();
         if (partsHaveBsp)
@@ -108,9 +114,9 @@ public static class ShadowShapeBuilder
     /// CPartArray::UpdateParts poses min(NumParts, frames) parts; with no frame a one-part object sits at
     /// the entity origin and the parts of a multi-part object have no meaningful pose.
     /// </summary>
-    private static bool TryRetailPose(PlacementResolution placement, int partCount, int index, out Frame pose, List<Diagnostic> diagnostics, uint gfxId)
+    private static bool TryRetailPose(PlacementFrame? placement, int partCount, int index, out Frame pose, List<Diagnostic> diagnostics, uint gfxId)
     {
-        if (placement.Frame is { } frame)
+        if (placement is { } frame)
         {
             if (index < frame.Frames.Count) { pose = frame.Frames[index]; return true; }
             diagnostics.Add(new(DiagnosticCodes.NoPose, $"part {index} (GfxObj 0x{gfxId:X8}): placement {frame.Name} has only {frame.Frames.Count} frame(s); the part gets no pose and is skipped"));
@@ -124,7 +130,7 @@ public static class ShadowShapeBuilder
     }
 
     /// <summary>The seed design's builder (§4.5), reproduced exactly so its divergences can be measured.</summary>
-    private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, PlacementResolution placement, float scale, List<Diagnostic> diagnostics)
+    private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, PlacementFrame? placement, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();
         for (var i = 0; i < setup.CylSpheres.Count; i++)
@@ -147,7 +153,7 @@ public static class ShadowShapeBuilder
         {
             var gfx = parts[i];
             if (gfx?.HasPhysics != true) continue;
-            var frame = placement.Frame;
+            var frame = placement;
             var pose = frame is not null && i < frame.Frames.Count ? frame.Frames[i] : Frame.Identity;
             shapes.Add(BspShape(i, gfx, pose, scale, scale));
         }

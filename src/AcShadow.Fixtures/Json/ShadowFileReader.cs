@@ -16,8 +16,7 @@ public static class ShadowFileReader
     {
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
-        var format = Str(root, "format");
-        if (format != ShadowFileFormat.Format) throw new FormatException($"format is \"{format}\", expected \"{ShadowFileFormat.Format}\"");
+        AcShadow.Fixtures.FormatCheck.Require(root, ShadowFileFormat.Format, "shadow file");
         if (!JsonIds.TryParse(Str(root, "setupId"), out var setupId)) throw new FormatException("setupId is not a hex id");
         if (!ShapePolicies.TryParse(Str(root, "policy"), out var policy)) throw new FormatException("unknown policy");
         var placement = Prop(root, "placement");
@@ -25,11 +24,11 @@ public static class ShadowFileReader
         var diagnostics = Arr(root, "diagnostics").Select(d => new Diagnostic(Str(d, "code"), Str(d, "message"))).ToArray();
         var setup = Prop(root, "setup");
         return new ShadowShapeSet(setupId, policy,
-            new PlacementResolution(Str(placement, "requested"), Str(placement, "used"), null),
+            new PlacementResolution(Str(placement, "requested"), Str(placement, "used")),
             Float(root, "entityScale"), Prop(setup, "hasPhysicsBsp").GetBoolean(), shapes, diagnostics);
     }
 
-    private static ShadowShape ReadShape(JsonElement s)
+    internal static ShadowShape ReadShape(JsonElement s)
     {
         var source = Str(s, "source") switch
         {

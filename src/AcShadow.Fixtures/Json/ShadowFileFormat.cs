@@ -3,7 +3,7 @@ namespace AcShadow.Core.Json;
 /// <summary>Names shared by the shadow file writer and reader.</summary>
 public static class ShadowFileFormat
 {
-    public const string Format = "acshadow.shadow/1";
+    public const string Format = AcShadow.Fixtures.FileFormats.Shadow;
 
     /// <summary>Relative path of a Setup's shadow file inside an output folder.</summary>
     public static string PathFor(uint setupId) => $"setups/{JsonIds.Format(setupId)}.shadow.json";

@@ -15,8 +15,7 @@ public static class BspFileReader
     {
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
-        var format = Str(root, "format");
-        if (format != BspFileFormat.Format) throw new FormatException($"format is \"{format}\", expected \"{BspFileFormat.Format}\"");
+        AcShadow.Fixtures.FormatCheck.Require(root, BspFileFormat.Format, "BSP file");
         if (!JsonIds.TryParse(Str(root, "gfxObjId"), out var id)) throw new FormatException("gfxObjId is not a hex id");
 
         var vertices = Arr(root, "vertices").Select(v => new BspVertex(Int(v, "id"), Vec(Prop(v, "position")))).ToArray();
@@ -61,12 +60,15 @@ public static class BspFileReader
 
     internal static string Str(JsonElement e, string name) => Prop(e, name).GetString() ?? throw new FormatException($"\"{name}\" is null");
     internal static int Int(JsonElement e, string name) => Prop(e, name).GetInt32();
-    internal static float Float(JsonElement e, string name) => Prop(e, name).GetSingle();
+    internal static float Float(JsonElement e, string name) => Number(Prop(e, name));
+
+    /// <summary>The writers put null where a float is NaN or infinite (JSON has no such numbers); it reads back as NaN.</summary>
+    internal static float Number(JsonElement e) => e.ValueKind == JsonValueKind.Null ? float.NaN : e.GetSingle();
     internal static IEnumerable<JsonElement> Arr(JsonElement e, string name) => Prop(e, name).EnumerateArray();
 
     internal static Vector3 Vec(JsonElement e)
     {
-        var a = e.EnumerateArray().Select(x => x.GetSingle()).ToArray();
+        var a = e.EnumerateArray().Select(Number).ToArray();
         if (a.Length != 3) throw new FormatException("a vector needs 3 numbers");
         return new Vector3(a[0], a[1], a[2]);
     }

@@ -1,9 +1,7 @@
-using AcShadow.Core.Dat.Objects;
-
 namespace AcShadow.Core.Shapes;
 
 /// <summary>The placement a part array asked for and the one it got ("None" when it got none).</summary>
-public sealed record PlacementResolution(string Requested, string Used, PlacementFrame? Frame)
+public sealed record PlacementResolution(string Requested, string Used)
 {
     public const string NoneName = "None";
 }

@@ -1,0 +1,39 @@
+using System.Numerics;
+using System.Text.Json;
+using AcShadow.Core.Json;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Fixtures;
+
+/// <summary>One object scene.json places: what it is, where it stands in the world, and the file that describes it.</summary>
+/// <param name="Kind">"setup", "gfxObj" or "other".</param>
+/// <param name="File">Output-relative path of its shadow file (setup) or BSP dump (gfxObj); null when unresolved or drawing-only.</param>
+/// <param name="Shapes">A bare GfxObj's one BSP shape (empty for setups, whose shapes are in their shadow file).</param>
+public sealed record ScenePlacement(int Index, uint Id, string Kind, Vector3 WorldPosition, Quaternion WorldRotation, string? File, IReadOnlyList<ShadowShape> Shapes);
+
+/// <summary>scene.json read back: a landblock's placed objects in world frames.</summary>
+public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePolicy Policy, float EntityScale, IReadOnlyList<ScenePlacement> Objects)
+{
+    public static FixtureScene Read(string json)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var root = doc.RootElement;
+        FormatCheck.Require(root, FileFormats.Scene, "scene.json");
+        var policyText = BspFileReader.Str(root, "policy");
+        if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"policy \"{policyText}\" is not retail or union");
+        var objects = BspFileReader.Arr(root, "objects").Select(o =>
+        {
+            var frame = BspFileReader.Prop(o, "worldFrame");
+            var file = BspFileReader.Prop(o, "file");
+            var shapes = o.TryGetProperty("shapes", out var s) ? s.EnumerateArray().Select(ShadowFileReader.ReadShape).ToArray() : [];
+            return new ScenePlacement(BspFileReader.Int(o, "index"), Id(o, "id"), BspFileReader.Str(o, "kind"),
+                BspFileReader.Vec(BspFileReader.Prop(frame, "origin")), BspFileReader.Quat(BspFileReader.Prop(frame, "orientation")),
+                file.ValueKind == JsonValueKind.Null ? null : file.GetString(), shapes);
+        }).ToArray();
+        return new FixtureScene(Id(root, "landblockId"), BspFileReader.Vec(BspFileReader.Prop(root, "worldOrigin")), policy,
+            BspFileReader.Float(root, "entityScale"), objects);
+    }
+
+    private static uint Id(JsonElement e, string name) =>
+        JsonIds.TryParse(BspFileReader.Str(e, name), out var id) ? id : throw new FormatException($"{name} is not a hex id");
+}
