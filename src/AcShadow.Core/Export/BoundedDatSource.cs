@@ -16,7 +16,7 @@ public sealed class BoundedDatSource : IDatSource
     private readonly ConcurrentDictionary<uint, Lazy<object?>> _cache = new();
     private readonly ConcurrentQueue<uint> _order = new();
 
-    public BoundedDatSource(DatArchive archive, DatSourceInfo info, int capacity = 4096)
+    public BoundedDatSource(DatArchive archive, DatSourceInfo info, int capacity = 256)
     {
         ArgumentOutOfRangeException.ThrowIfLessThan(capacity, 1);
         _archive = archive;

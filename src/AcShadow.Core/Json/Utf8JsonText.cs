@@ -27,6 +27,14 @@ public sealed class Utf8JsonText
         return this;
     }
 
+    /// <summary>Text already in canonical form (a rendered head), as UTF-8.</summary>
+    public Utf8JsonText Utf8(string text)
+    {
+        Ensure(Encoding.UTF8.GetMaxByteCount(text.Length));
+        _length += Encoding.UTF8.GetBytes(text, _buffer.AsSpan(_length));
+        return this;
+    }
+
     public Utf8JsonText Indent(int level)
     {
         Ensure(level * 2);
