@@ -31,7 +31,7 @@ public class InterruptedBatchTests
         using (var process = Process.Start(BuiltCli.Start([], "batch", "--all", "--dat", dats, "--out", cut, "--jobs", "1", "--quiet"))!)
         {
             // Output appears only once the export is done, file by file: kill as soon as the first lands.
-            while (!process.HasExited && FilesUnder(cut).Length == 0) Thread.Sleep(2);
+            while (!process.HasExited && !FilesUnder(cut).Any(f => !IsTemporary(f))) Thread.Sleep(2);
             Assert.False(process.HasExited, "the batch finished before it could be killed");
             process.Kill();
             process.WaitForExit();

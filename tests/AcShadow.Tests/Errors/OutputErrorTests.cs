@@ -170,7 +170,7 @@ public class OutputErrorTests
         var deadPid = Enumerable.Range(4_000_000, 100_000).First(p => !Directory.Exists($"/proc/{p}"));
         var dead = Path.Combine(dir.Path, "setups", $"0x020019FF.shadow.json.{deadPid}.tmp");
         var live = Path.Combine(dir.Path, "setups", $"0x02000001.shadow.json.{Environment.ProcessId}.tmp");
-        var notOurs = Path.Combine(dir.Path, "setups", "notes.tmp");
+        var notOurs = Path.Combine(dir.Path, "setups", $"notes.{deadPid}.tmp");
         foreach (var f in new[] { dead, live, notOurs }) File.WriteAllText(f, "{\n  \"form");
 
         Assert.Equal(0, CliRun.Of("dump", "--setup", "0x020019FF", "--out", dir.Path).ExitCode);
