@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcShadow.Cli.Commands;
+using AcShadow.Cli.Conventions;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Dat;
 
@@ -20,6 +21,8 @@ public static class AcShadowApp
             DumpCommand.Create(console),
         };
         foreach (var command in ExtraCommands.All(console)) root.Subcommands.Add(command);
+        ExamplesHelpAction.Install(root);
+        VersionAction.Install(root);
 
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0)
@@ -28,7 +31,8 @@ public static class AcShadowApp
             var error = parse.Errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? parse.Errors[0];
             var command = parse.CommandResult.Command;
             var help = command == root ? "acshadow --help" : $"acshadow {command.Name} --help";
-            console.Error.WriteLine($"acshadow: {error.Message} (see `{help}`)");
+            var suggestion = TypoSuggestion.For(parse) is { } near ? $" Did you mean '{near}'?" : "";
+            console.Error.WriteLine($"acshadow: {error.Message}{suggestion} (see `{help}`)");
             return ExitCodes.Usage;
         }
         try

@@ -46,10 +46,11 @@ public sealed class DatArchive : IDisposable
         {
             return new DatArchive(stream, ownsStream, name);
         }
-        catch
+        catch (Exception e)
         {
             if (ownsStream) stream.Dispose();
-            throw;
+            if (e is DatFormatException || !IsReadFailure(e)) throw;
+            throw new DatFormatException($"{name}: the header or directory cannot be read ({e.GetType().Name}: {e.Message})");
         }
     }
 
@@ -62,12 +63,37 @@ public sealed class DatArchive : IDisposable
         return false;
     }
 
-    /// <summary>The object's bytes with its block chain followed, or null when the dat has no such id.</summary>
+    /// <summary>
+    /// The object's bytes with its block chain followed, or null when the dat has no such id. A damaged
+    /// chain is a <see cref="DatFormatException"/> reading "corrupt dat: object 0x… in {file}: …".
+    /// </summary>
     public byte[]? ReadObjectBytes(uint id)
     {
-        if (!TryGetEntry(id, out var entry)) return null;
-        return ReadChain(entry.Offset, checked((int)entry.Size), $"object 0x{id:X8}");
+        try
+        {
+            return ReadObjectBytesUnnamed(id);
+        }
+        catch (Exception e) when (IsReadFailure(e))
+        {
+            throw DatFormatException.CorruptObject($"object 0x{id:X8} in {Name}", id, e);
+        }
     }
+
+    /// <summary>As <see cref="ReadObjectBytes"/>, but a damaged chain's message leaves naming the object to the caller.</summary>
+    internal byte[]? ReadObjectBytesUnnamed(uint id)
+    {
+        if (!TryGetEntry(id, out var entry)) return null;
+        if (entry.Size > int.MaxValue)
+            throw new DatFormatException($"the directory gives it {entry.Size} bytes, more than any object holds");
+        return ReadChain(entry.Offset, (int)entry.Size, "its block chain");
+    }
+
+    /// <summary>
+    /// What reading damaged bytes can throw (bounds, overflow, end of stream, allocation, bad arguments);
+    /// not cancellation, which is the caller's, nor thread aborts.
+    /// </summary>
+    internal static bool IsReadFailure(Exception e) =>
+        e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException);
 
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
     public int MaxIteration => _entries.Length == 0 ? 0 : _entries.Max(e => e.Iteration);
@@ -88,34 +114,42 @@ public sealed class DatArchive : IDisposable
         {
             if (depth > 32) throw new DatFormatException($"{Name}: B-tree deeper than 32 levels (cycle?)");
             if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
-            var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"B-tree node 0x{offset:X8}");
+            var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
             var node = DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
             result.AddRange(node.Entries);
             foreach (var child in node.Branches) Walk(child, depth + 1);
         }
     }
 
+    /// <summary>
+    /// Follows a block chain for <paramref name="size"/> bytes. A chain visits each block at most once (a
+    /// cycle is refused, not read round again as data), and the buffer grows with the blocks actually
+    /// read: a size a corrupt directory inflates cannot allocate more than the file holds.
+    /// </summary>
     private byte[] ReadChain(int start, int size, string what)
     {
         var blockSize = Header.BlockSize;
         var payload = blockSize - 4;
-        var buffer = new byte[size];
+        var maxBlocks = Length / blockSize + 1;
+        if (size > maxBlocks * payload)
+            throw new DatFormatException($"{what} would hold {size} bytes, more than the {Length}-byte file can");
+        var buffer = new byte[Math.Min(size, 64 * payload)];
         var filled = 0;
         var block = start;
-        var hops = 0;
-        var maxHops = (int)(Length / blockSize) + 1;
+        HashSet<int>? visited = null;
         lock (_gate)
         {
             while (filled < size)
             {
                 if (block <= 0 || block + 4L > Length)
-                    throw new DatFormatException($"{Name}: {what} block chain points at 0x{block:X8}, outside the {Length}-byte file");
-                if (++hops > maxHops)
-                    throw new DatFormatException($"{Name}: {what} block chain loops");
+                    throw new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file");
+                if (filled > 0 && !(visited ??= [start]).Add(block))
+                    throw new DatFormatException($"{what} loops back to block 0x{block:X8}");
                 var next = BinaryPrimitives.ReadInt32LittleEndian(ReadRawLocked(block, 4));
                 var take = Math.Min(payload, size - filled);
                 if (block + 4L + take > Length)
-                    throw new DatFormatException($"{Name}: {what} runs past the end of the file");
+                    throw new DatFormatException($"{what} runs past the end of the file");
+                if (filled + take > buffer.Length) Array.Resize(ref buffer, (int)Math.Min(size, Math.Max(2L * buffer.Length, filled + take)));
                 ReadRawLocked(block + 4, take).CopyTo(buffer.AsSpan(filled));
                 filled += take;
                 block = next & 0x7FFFFFFF;

@@ -6,9 +6,11 @@ namespace AcShadow.Core.Dat;
 /// <summary>
 /// Little-endian reader over one object's bytes (block chain already followed).
 /// Every read is bounds-checked so a truncated object is a <see cref="DatFormatException"/>, never garbage.
+/// <paramref name="what"/> prefixes its messages; leave it null when the caller names the object itself.
 /// </summary>
-public sealed class DatBinaryReader(ReadOnlyMemory<byte> data, string what)
+public sealed class DatBinaryReader(ReadOnlyMemory<byte> data, string? what = null)
 {
+    private readonly string _prefix = what is null ? "" : what + ": ";
     private readonly ReadOnlyMemory<byte> _data = data;
     private int _offset;
 
@@ -18,7 +20,7 @@ public sealed class DatBinaryReader(ReadOnlyMemory<byte> data, string what)
     private ReadOnlySpan<byte> Take(int count)
     {
         if (count < 0 || _offset + count > _data.Length)
-            throw new DatFormatException($"{what}: needs {count} more byte(s) at offset {_offset}, but only {Remaining} remain (truncated or not this object type).");
+            throw new DatFormatException($"{_prefix}needs {count} more byte(s) at offset {_offset}, but only {Remaining} remain (truncated or not this object type).");
         var span = _data.Span.Slice(_offset, count);
         _offset += count;
         return span;
@@ -68,7 +70,7 @@ public sealed class DatBinaryReader(ReadOnlyMemory<byte> data, string what)
     public int ReadCount(uint count, int minBytesEach, string field)
     {
         if (count > int.MaxValue || (long)count * minBytesEach > Remaining)
-            throw new DatFormatException($"{what}: {field} count {count} cannot fit in the {Remaining} byte(s) left.");
+            throw new DatFormatException($"{_prefix}{field} count {count} cannot fit in the {Remaining} byte(s) left.");
         return (int)count;
     }
 }

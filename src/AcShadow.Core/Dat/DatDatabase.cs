@@ -35,13 +35,21 @@ public sealed class DatDatabase : IDatSource, IDisposable
         if (!kind.Contains(id)) return null;
         var lazy = _cache.GetOrAdd(id, key => new Lazy<object?>(() =>
         {
-            var bytes = _archive.ReadObjectBytes(key);
-            if (bytes is null) return null;
-            var what = $"{kind} 0x{key:X8} in {_archive.Name}";
-            var value = read(new DatBinaryReader(bytes, what));
-            // Every object starts with its own id: a mismatch means the directory points at the wrong bytes.
-            if (idOf(value) != key) throw new DatFormatException($"{what}: the object's bytes carry id 0x{idOf(value):X8}");
-            return value;
+            // The IDatSource boundary: whatever damaged bytes make the chain walk or a decoder throw
+            // (bounds, overflow, end of stream, a bad tag, a cycle) leaves here as one "corrupt dat" naming the object.
+            try
+            {
+                var bytes = _archive.ReadObjectBytesUnnamed(key);
+                if (bytes is null) return null;
+                var value = read(new DatBinaryReader(bytes));
+                // Every object starts with its own id: a mismatch means the directory points at the wrong bytes.
+                if (idOf(value) != key) throw new DatFormatException($"the object's bytes carry id 0x{idOf(value):X8}");
+                return value;
+            }
+            catch (Exception e) when (DatArchive.IsReadFailure(e))
+            {
+                throw DatFormatException.CorruptObject($"{kind} 0x{key:X8} in {_archive.Name}", key, e);
+            }
         }, LazyThreadSafetyMode.ExecutionAndPublication));
         return (T?)lazy.Value;
     }

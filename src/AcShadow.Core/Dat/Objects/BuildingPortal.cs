@@ -7,7 +7,7 @@ public sealed record BuildingPortal(ushort Flags, ushort OtherCellId, ushort Oth
         var flags = r.ReadUInt16();
         var otherCell = r.ReadUInt16();
         var otherPortal = r.ReadUInt16();
-        var count = r.ReadUInt16();
+        var count = r.ReadCount(r.ReadUInt16(), 2, "stab");
         var stabs = new ushort[count];
         for (var i = 0; i < count; i++) stabs[i] = r.ReadUInt16();
         r.Align(4);

@@ -29,7 +29,7 @@ public sealed record GfxObj(
         for (var i = 0; i < surfaceCount; i++) surfaces[i] = r.ReadUInt32();
 
         var vertexType = r.ReadInt32();
-        if (vertexType != 1) throw new DatFormatException($"GfxObj 0x{id:X8}: vertex type {vertexType} is not the SW vertex type (1)");
+        if (vertexType != 1) throw new DatFormatException($"vertex type {vertexType} is not the SW vertex type (1)");
         var vertexCount = r.ReadCount(r.ReadUInt32(), 28, "vertex");
         var vertices = new Dictionary<ushort, Vector3>(vertexCount);
         for (var i = 0; i < vertexCount; i++)

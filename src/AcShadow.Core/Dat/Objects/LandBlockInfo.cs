@@ -20,12 +20,13 @@ public sealed record LandBlockInfo(
         for (var i = 0; i < objectCount; i++) objects[i] = Stab.Read(r);
         var buildingCount = r.ReadUInt16();
         var hasRestrictions = r.ReadUInt16() != 0;
-        var buildings = new BuildingInfo[buildingCount];
+        // Model id, frame, leaf count and portal count: 40 bytes at least per building.
+        var buildings = new BuildingInfo[r.ReadCount(buildingCount, 40, "building")];
         for (var i = 0; i < buildingCount; i++) buildings[i] = BuildingInfo.Read(r);
         var restrictions = new List<KeyValuePair<uint, uint>>();
         if (hasRestrictions)
         {
-            var count = r.ReadUInt16();
+            var count = r.ReadCount(r.ReadUInt16(), 8, "restriction");
             r.ReadUInt16(); // bucket count
             for (var i = 0; i < count; i++) restrictions.Add(new(r.ReadUInt32(), r.ReadUInt32()));
         }

@@ -52,7 +52,7 @@ public sealed record Setup(
             for (var i = 0; i < numParts; i++) frames[i] = Frame.Read(r);
             var hooks = new AnimationHook[r.ReadCount(r.ReadUInt32(), AnimationHookLayout.HeaderBytes, "animation hook")];
             for (var h = 0; h < hooks.Length; h++)
-                hooks[h] = AnimationHook.Read(r, $"Setup 0x{id:X8}: placement {Placement.Name(key)}, hook {h + 1} of {hooks.Length}");
+                hooks[h] = AnimationHook.Read(r, $"placement {Placement.Name(key)}, hook {h + 1} of {hooks.Length}");
             placements[p] = new PlacementFrame(key, frames) { Hooks = hooks };
         }
 

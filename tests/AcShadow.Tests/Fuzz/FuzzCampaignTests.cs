@@ -1,0 +1,101 @@
+using AcShadow.Fuzz;
+
+namespace AcShadow.Tests.Fuzz;
+
+/// <summary>
+/// CI's fixed-seed campaign (issue 6): 2,000 damaged copies of the sample dats, each run through `dump`
+/// and `batch`; every one must end with a documented exit code, a "corrupt dat" message naming the object
+/// when one is damaged, whole output files, and within the time and memory limits.
+/// </summary>
+public class FuzzCampaignTests
+{
+    public const long Seed = 20261122;
+    public const int Cases = 2000;
+
+    [Fact]
+    public void A_fixed_seed_campaign_of_2000_damaged_dats_finds_no_failure()
+    {
+        var scratch = ScratchFolder.Create();
+        CampaignResult result;
+        try
+        {
+            // A generous time limit: the suite runs other tests beside this one on two shared cores.
+            result = FuzzCampaign.Run(FuzzBase.All(), new CampaignOptions(Seed, Cases, TimeLimitSeconds: 30), scratch);
+        }
+        finally
+        {
+            Directory.Delete(scratch, recursive: true);
+        }
+
+        Assert.Equal(Cases, result.Cases);
+        Assert.True(result.FailedCases == 0, string.Join("\n", result.Failures.Select(f =>
+            $"{f.Failure.Signature} ({result.FailureCounts[f.Failure.Signature]} cases); first: {f.Input.Description}\n{f.Failure.Detail}")));
+        // The campaign reaches both the happy path and the refusals: a campaign that never damaged
+        // anything, or never got past opening the dat, would prove nothing.
+        Assert.True(result.ExitCodeCounts.GetValueOrDefault(0) > Cases / 4, $"exit codes: {string.Join(", ", result.ExitCodeCounts)}");
+        Assert.True(result.ExitCodeCounts.GetValueOrDefault(3) > Cases / 20, $"exit codes: {string.Join(", ", result.ExitCodeCounts)}");
+    }
+
+    [Fact]
+    public void The_same_seed_damages_the_dats_the_same_way()
+    {
+        var mutator = new DatMutator(FuzzBase.All());
+        for (var i = 0; i < 50; i++)
+        {
+            var a = mutator.Mutate(Seed, i);
+            var b = mutator.Mutate(Seed, i);
+            Assert.Equal(a.Description, b.Description);
+            Assert.Equal(a.Portal, b.Portal);
+            Assert.Equal(a.Cell, b.Cell);
+        }
+    }
+
+    [Theory]
+    [InlineData(0, Cases)]      // the sample: every boundary within CI's campaign
+    [InlineData(1, 4 * Cases)]  // the two-level directory has twice the blocks: within the long campaign
+    public void Truncation_cases_cut_at_every_block_boundary_of_both_dats(int baseIndex, int cases)
+    {
+        var bases = FuzzBase.All();
+        var source = bases[baseIndex];
+        var mutator = new DatMutator(bases);
+        var portalCuts = new HashSet<int>();
+        var cellCuts = new HashSet<int>();
+        for (var i = 0; i < cases; i += 10)
+        {
+            var input = mutator.Mutate(Seed, i);
+            if (input.From != source) continue;
+            if (input.Portal.Length < source.Portal.Length) portalCuts.Add(input.Portal.Length);
+            if (input.Cell.Length < source.Cell.Length) cellCuts.Add(input.Cell.Length);
+        }
+        for (var b = 0; b < source.PortalLayout.BlockCount; b++) Assert.Contains(source.PortalLayout.BlockStart(b), portalCuts);
+        for (var b = 0; b < source.CellLayout.BlockCount; b++) Assert.Contains(source.CellLayout.BlockStart(b), cellCuts);
+    }
+
+    [Fact]
+    public void The_second_base_has_a_two_level_directory()
+    {
+        var deep = FuzzBase.SampleWithDeepDirectory();
+        Assert.True(deep.PortalLayout.NodeChains.Count > 1, $"{deep.PortalLayout.NodeChains.Count} B-tree node(s)");
+        Assert.Equal(FuzzBase.Sample().SetupIds, deep.SetupIds);
+    }
+
+    [Fact]
+    public void The_oracle_fails_an_internal_error_a_partial_file_and_an_unnamed_corrupt_object()
+    {
+        Assert.NotNull(CaseRunner.Judge("dump", 1, "acshadow: internal error: boom (run with --verbose ...)\nSystem.OverflowException: boom\n"));
+        Assert.NotNull(CaseRunner.Judge("dump", 6, "acshadow: cannot write x\n"));
+        Assert.NotNull(CaseRunner.Judge("dump", 3, "acshadow: the dat is malformed: needs 4 more byte(s) at offset 3\n"));
+        Assert.NotNull(CaseRunner.Judge("batch", 0, "warning: 0x02000001: unreadable-gfxobj: part 0 (GfxObj 0x01000001) cannot be read: block chain loops\n"));
+        Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: the dat is malformed: corrupt dat: Setup 0x02000001 in client_portal.dat: needs 4 more byte(s)\n"));
+        Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: --dat: x.dat is not a readable dat: magic\n"));
+        Assert.Null(CaseRunner.Judge("dump", 4, "acshadow: Setup 0x02000001 is not in x\n"));
+
+        using var folder = new Support.TempDir();
+        Assert.Null(OutputCheck.Problem(folder.Path));
+        File.WriteAllText(Path.Combine(folder.Path, "a.json"), "{\"shapes\": [1, 2");
+        Assert.Contains("not whole JSON", OutputCheck.Problem(folder.Path));
+        File.WriteAllText(Path.Combine(folder.Path, "a.json"), "{}");
+        File.WriteAllText(Path.Combine(folder.Path, "b.json.123.tmp"), "{}");
+        Assert.Contains("temporary file", OutputCheck.Problem(folder.Path));
+    }
+}
