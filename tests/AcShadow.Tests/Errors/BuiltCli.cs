@@ -63,6 +63,12 @@ public static class BuiltCli
 
     /// <summary>Lets another user traverse and read a folder (temporary folders are created 0700).</summary>
     public static void OpenToEveryone(string folder) =>
-        File.SetUnixFileMode(folder, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute
+        SetMode(folder, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute
             | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
+
+    public static void SetMode(string path, UnixFileMode mode)
+    {
+        if (OperatingSystem.IsWindows()) throw new PlatformNotSupportedException("these tests need Unix file modes");
+        File.SetUnixFileMode(path, mode);
+    }
 }

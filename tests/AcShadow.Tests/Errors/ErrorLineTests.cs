@@ -40,7 +40,7 @@ public class ErrorLineTests
     {
         var run = CliRun.Of("audit", "--out", "/proc/acshadow-test/audit.csv");
         Assert.Equal(6, run.ExitCode);
-        Assert.Contains("cannot write /proc/acshadow-test/audit.csv", Assert.Single(run.ErrorLines.Where(l => !l.Contains("SYNTHETIC"))));
+        Assert.Contains("cannot write /proc/acshadow-test/audit.csv", Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC")));
     }
 
     [Fact]

@@ -17,7 +17,7 @@ public class OutputErrorTests
     };
 
     private static string ErrorLine(CliRun run) =>
-        Assert.Single(run.ErrorLines.Where(l => !l.Contains("SYNTHETIC") && !l.Contains("Debug build") && !l.StartsWith("warning:")));
+        Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC") && !l.Contains("Debug build") && !l.StartsWith("warning:"));
 
     [Theory]
     [MemberData(nameof(Writers))]
@@ -78,7 +78,7 @@ public class OutputErrorTests
         var (code, _, stderr) = BuiltCli.RunShell(canMount ? ["unshare", "-m"] : [], script);
 
         Assert.Equal(6, code);
-        var line = Assert.Single(stderr.Split('\n', StringSplitOptions.RemoveEmptyEntries).Where(l => !l.Contains("SYNTHETIC")));
+        var line = Assert.Single(stderr.Split('\n', StringSplitOptions.RemoveEmptyEntries), l => !l.Contains("SYNTHETIC"));
         Assert.Contains("acshadow: cannot write ", line);
         Assert.Contains(canMount ? "No space left on device" : "too large", line);
         var files = Directory.GetFiles(copy, "*", SearchOption.AllDirectories);
