@@ -25,12 +25,12 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
         var cell = Path.Combine(folder, "client_cell_1.dat");
         File.WriteAllBytes(portal, input.Portal);
         File.WriteAllBytes(cell, input.Cell);
-        var policy = (input.DumpSetup & 1) == 0 ? "retail" : "union";
         string[][] commands =
         [
-            ["dump", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "dump"), "--policy", policy, "--verbose"],
+            ["dump", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "dump"),
+                "--policy", input.Policy, "--format", input.Format, "--verbose"],
             ["batch", "--all", "--landblock", $"0x{input.Landblock:X4}", "--dat", portal, "--cell-dat", cell,
-                "--out", Path.Combine(folder, "batch"), "--jobs", "1", "--quiet", "--policy", policy, "--verbose"],
+                "--out", Path.Combine(folder, "batch"), "--jobs", "1", "--quiet", "--policy", input.Policy, "--format", input.Format, "--verbose"],
         ];
 
         var clock = Stopwatch.StartNew();
