@@ -97,5 +97,13 @@ public class FuzzCampaignTests
         File.WriteAllText(Path.Combine(folder.Path, "a.json"), "{}");
         File.WriteAllText(Path.Combine(folder.Path, "b.json.123.tmp"), "{}");
         Assert.Contains("temporary file", OutputCheck.Problem(folder.Path));
+        File.Delete(Path.Combine(folder.Path, "b.json.123.tmp"));
+        var sha = Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData("{}"u8));
+        File.WriteAllText(Path.Combine(folder.Path, "index.json"), $"{{\"files\": [{{\"path\": \"a.json\", \"sha256\": \"{sha}\"}}]}}");
+        Assert.Null(OutputCheck.Problem(folder.Path));
+        File.WriteAllText(Path.Combine(folder.Path, "a.json"), "[]");
+        Assert.Contains("does not have the bytes", OutputCheck.Problem(folder.Path));
+        File.Delete(Path.Combine(folder.Path, "a.json"));
+        Assert.Contains("not there", OutputCheck.Problem(folder.Path));
     }
 }
