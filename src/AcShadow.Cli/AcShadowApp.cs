@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcShadow.Cli.Commands;
+using AcShadow.Cli.Conventions;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Dat;
 
@@ -20,6 +21,8 @@ public static class AcShadowApp
             DumpCommand.Create(console),
         };
         foreach (var command in ExtraCommands.All(console)) root.Subcommands.Add(command);
+        ExamplesHelpAction.Install(root);
+        VersionAction.Install(root);
 
         var parse = root.Parse(args);
         if (parse.Errors.Count > 0)
@@ -28,24 +31,33 @@ public static class AcShadowApp
             var error = parse.Errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? parse.Errors[0];
             var command = parse.CommandResult.Command;
             var help = command == root ? "acshadow --help" : $"acshadow {command.Name} --help";
-            console.Error.WriteLine($"acshadow: {error.Message} (see `{help}`)");
+            var suggestion = TypoSuggestion.For(parse) is { } near ? $" Did you mean '{near}'?" : "";
+            console.Error.WriteLine($"acshadow: {error.Message}{suggestion} (see `{help}`)");
             return ExitCodes.Usage;
         }
         try
         {
             return parse.Invoke(new InvocationConfiguration { Output = console.Out, Error = console.Error, EnableDefaultExceptionHandler = false });
         }
-        catch (Exception e)
+        catch (Exception thrown)
         {
+            // A parallel loop wraps what a worker threw; the first worker's exception is the one to report.
+            var e = thrown is AggregateException a ? a.Flatten().InnerExceptions[0] : thrown;
             var (code, message) = e switch
             {
                 CliException c => (c.ExitCode, c.Message),
                 DatFormatException d => (ExitCodes.DatUnreadable, $"the dat is malformed: {d.Message}"),
+                // Output writes and the --setups file are wrapped where they happen, so a bare I/O error is the dat's.
+                IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),
                 _ => (ExitCodes.InternalError, $"internal error: {e.Message} (run with --verbose for the stack trace, and please report it)"),
             };
-            console.Error.WriteLine($"acshadow: {message}");
-            if (parse.GetValue(verbose)) console.Error.WriteLine(e.ToString());
+            console.Error.WriteLine($"acshadow: {OneLine(message)}");
+            if (parse.GetValue(verbose)) console.Error.WriteLine(thrown.ToString());
             return code;
         }
     }
+
+    /// <summary>Every error is one line, even when an exception's message (or a path in it) holds line breaks.</summary>
+    private static string OneLine(string message) =>
+        string.Join(' ', message.Split(['\r', '\n'], StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries));
 }

@@ -13,6 +13,7 @@ public static class FileFormats
     public const string Bsp = "acshadow.bsp/1";
     public const string Index = "acshadow.index/1";
     public const string Scene = "acshadow.scene/1";
+    public const string Audit = "acshadow.audit/1";
 
     /// <summary>
     /// acdream's GfxObj fixture shape carries no format field (its field set is fixed by acdream); the
@@ -30,6 +31,8 @@ public static class FileFormats
             "a landblock's placed objects and buildings with world frames"),
         new("index", Index, "index.json", "urn:acshadow:schema:acshadow.index-1",
             "a batch's inputs and every file it wrote, with SHA-256"),
+        new("audit", Audit, "(audit --format json --out FILE)", "urn:acshadow:schema:acshadow.audit-1",
+            "the audit report: one row per Setup, a summary by category, what was skipped"),
         new("acdream", AcdreamGfxObj, "gfxobjs/0x%08X.gfxobj.json", "urn:acshadow:schema:acdream.gfxobj",
             "acdream's GfxObj fixture shape (--format acdream): polygons with planes and vertices, no BSP tree"),
     ];

@@ -7,22 +7,31 @@ namespace AcShadow.Fixtures;
 /// A folder acshadow wrote (<c>dump --out</c> or <c>batch --out</c>): Setups load on demand, the index and
 /// the scene when present. <see cref="PlaceScene"/> places every collidable object of scene.json in the world.
 /// </summary>
-public sealed class FixtureSet(string folder)
+public sealed class FixtureSet
 {
     private readonly Dictionary<uint, SetupFixture> _setups = [];
     private readonly Lock _lock = new();
+    private readonly Lazy<FixtureIndex?> _index;
+    private readonly Lazy<FixtureScene?> _scene;
 
-    public string Folder { get; } = folder;
+    private FixtureSet(string folder)
+    {
+        Folder = folder;
+        _index = new(() => ReadOptional("index.json", FixtureIndex.Read));
+        _scene = new(() => ReadOptional("scene.json", FixtureScene.Read));
+    }
+
+    public string Folder { get; }
 
     public static FixtureSet Open(string folder) =>
         Directory.Exists(folder) ? new FixtureSet(folder)
             : throw new DirectoryNotFoundException($"fixtures folder {folder} does not exist; generate it with `acshadow batch --out {folder}`");
 
     /// <summary>index.json, or null when the folder has none (a <c>dump</c> writes none).</summary>
-    public FixtureIndex? Index => ReadOptional("index.json", FixtureIndex.Read);
+    public FixtureIndex? Index => _index.Value;
 
     /// <summary>scene.json, or null when the batch selected no landblock.</summary>
-    public FixtureScene? Scene => ReadOptional("scene.json", FixtureScene.Read);
+    public FixtureScene? Scene => _scene.Value;
 
     public SetupFixture Setup(uint setupId)
     {

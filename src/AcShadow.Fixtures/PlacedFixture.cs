@@ -18,8 +18,11 @@ public sealed class PlacedFixture
 
     internal PlacedFixture(SetupFixture fixture, Vector3 position, Quaternion rotation)
     {
+        var length = rotation.Length();
+        if (!float.IsFinite(length) || length < 1e-6f || !float.IsFinite(position.X + position.Y + position.Z))
+            throw new ArgumentException($"a world frame needs a finite position and a non-zero rotation; got {position}, {rotation}");
         Fixture = fixture;
-        _frame = new PartPose(position, Quaternion.Normalize(rotation), 1f);
+        _frame = new PartPose(position, Quaternion.Multiply(rotation, 1f / length), 1f);
     }
 
     /// <summary>Does a sphere at this world-space centre and radius touch the placed object?</summary>

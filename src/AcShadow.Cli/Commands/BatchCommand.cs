@@ -53,6 +53,7 @@ public static class BatchCommand
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
+        OutputFolder.Prepare(outDir);
         var engine = new ExportEngine(dat.Portal, options);
         var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
         {
@@ -71,6 +72,8 @@ public static class BatchCommand
         }
 
         var exported = clock.Elapsed;
+        OutputFolder.RefuseForeignFiles(outDir, result.Files.Select(f => (f.RelativePath, f.Content)).Append((BatchResult.IndexPath, result.IndexJson)),
+            OutputFolder.ListedByIndex(outDir));
         var writing = new ProgressReporter(console.Error, console.IsTerminal, quiet, "files written");
         int filesWritten, unchanged;
         long written;

@@ -58,14 +58,15 @@ public static class ChartCommand
         if (File.Exists(outDir))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
+        var missing = ids.Where(id => dat.Portal.ReadSetup(id) is null).ToArray();
+        if (missing.Length > 0)
+            throw new CliException(ExitCodes.NotInDat, $"Setup {string.Join(", ", missing.Select(JsonIds.Format))} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
         // Times from unoptimised code are several times slower and would mislead the speed axis.
         if (typeof(ChartRunner).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
-        var missing = ids.Where(id => dat.Portal.ReadSetup(id) is null).ToArray();
-        if (missing.Length > 0)
-            throw new CliException(ExitCodes.NotInDat, $"Setup {string.Join(", ", missing.Select(JsonIds.Format))} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
         var planned = selection.IsEmpty ? null : SelectionOptions.Plan(selection, dat);
+        OutputFolder.Prepare(outDir);
         var order = ids.Concat(planned?.Setups.Select(s => s.Id) ?? []).Distinct().ToArray();
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
 
@@ -88,6 +89,7 @@ public static class ChartCommand
 
         long bytes = 0;
         var files = ChartFiles.Render(report);
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
         foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
 
         var w = console.Out;

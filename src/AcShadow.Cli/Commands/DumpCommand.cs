@@ -42,8 +42,11 @@ public static class DumpCommand
             ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(setupId)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
 
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(setupId), export.Diagnostics);
+        var files = OutputFormatSelection.Apply(export.Files, formats).ToArray();
+        OutputFolder.Prepare(outDir);
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
         long bytes = 0;
-        foreach (var file in OutputFormatSelection.Apply(export.Files, formats))
+        foreach (var file in files)
         {
             bytes += OutputFolder.WriteAtomically(outDir, file);
             console.Out.WriteLine($"wrote {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes)");

@@ -7,11 +7,16 @@ namespace AcShadow.Cli.Commands;
 /// <summary>`--format canonical|acdream|both` on dump and batch.</summary>
 public static class FormatOption
 {
-    public static Option<string?> Create() => new("--format")
+    public static Option<string?> Create()
     {
-        Description = "canonical (default: shadow files and BSP dumps), acdream (acdream's 0x%08X.gfxobj.json GfxObj fixtures), or both",
-        HelpName = "canonical|acdream|both",
-    };
+        var option = new Option<string?>("--format")
+        {
+            Description = "canonical (default: shadow files and BSP dumps), acdream (acdream's 0x%08X.gfxobj.json GfxObj fixtures), or both",
+            HelpName = "canonical|acdream|both",
+        };
+        option.CompletionSources.Add("canonical", "acdream", "both");
+        return option;
+    }
 
     public static OutputFormats Parse(string? text)
     {

@@ -1,4 +1,5 @@
 using System.Globalization;
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
@@ -13,7 +14,9 @@ public static class ArgumentParsing
         if (!JsonIds.TryParse(text, out var id))
             throw new CliException(ExitCodes.Usage, $"{option}: '{text}' is not a Setup id: write it in hex, e.g. 0x020019FF or 020019FF");
         if (!DatObjectKind.Setup.Contains(id))
-            throw new CliException(ExitCodes.Usage, $"{option}: 0x{id:X8} is outside the Setup range {DatObjectKind.Setup.RangeText()}");
+            throw new CliException(ExitCodes.Usage, DatIdRanges.Describe(id) is { } what
+                ? $"{option}: 0x{id:X8} is {what}, not a Setup id: pass an id in the Setup range {DatObjectKind.Setup.RangeText()}"
+                : $"{option}: 0x{id:X8} is outside the Setup range {DatObjectKind.Setup.RangeText()}");
         return id;
     }
 

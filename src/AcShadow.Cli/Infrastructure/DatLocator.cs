@@ -46,10 +46,17 @@ public static class DatLocator
     private static DatDatabase OpenFile(string path, string expectedName, string source, DatFileKind expectedKind)
     {
         var file = Directory.Exists(path) ? Path.Combine(path, expectedName) : path;
+        if (Directory.Exists(file))
+            throw new CliException(ExitCodes.DatUnreadable, $"{source}: {file} is a folder, not a file: pass the path of your {expectedName}");
         if (!File.Exists(file))
             throw new CliException(ExitCodes.DatUnreadable, Directory.Exists(path)
                 ? $"{source}: folder {path} has no {expectedName}: pass the dat file itself or the folder that holds it"
                 : $"{source}: {path} does not exist: pass the path of your {expectedName} (or the folder holding it)");
+        // Checked before opening: a FIFO or a device reports no length, and opening a FIFO would wait forever.
+        var length = new FileInfo(file).Length;
+        if (length < DatHeader.Size)
+            throw new CliException(ExitCodes.DatUnreadable,
+                $"{source}: {file} is {length} bytes, too short for a dat (or not a regular file): every dat starts with a {DatHeader.Size}-byte header; pass your {expectedName}");
         FileStream stream;
         try
         {
@@ -68,13 +75,27 @@ public static class DatLocator
         {
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: {file} is not a readable dat: {e.Message}");
         }
-        // The header's data set says which database this is; a swapped pair would otherwise read as empty.
-        if (dat.Info.Kind != expectedKind && dat.Info.Kind is DatFileKind.Portal or DatFileKind.Cell)
+        catch (IOException e)
         {
+            throw new CliException(ExitCodes.DatUnreadable, $"{source}: cannot read {file}: {e.Message}");
+        }
+        // The header's data set says which database this is; a swapped pair would otherwise read as empty.
+        // Undefined is let through: a dat whose header does not say is tried rather than refused.
+        if (dat.Info.Kind != expectedKind && dat.Info.Kind != DatFileKind.Undefined)
+        {
+            var kind = dat.Info.Kind;
             dat.Dispose();
             throw new CliException(ExitCodes.DatUnreadable,
-                $"{source}: {file} is a {dat.Info.Kind.ToString().ToLowerInvariant()} dat, not a {expectedKind.ToString().ToLowerInvariant()} dat: pass {expectedName} there");
+                $"{source}: {file} is {KindName(kind)}, not {KindName(expectedKind)}: pass {expectedName} there");
         }
         return dat;
     }
+
+    private static string KindName(DatFileKind kind) => kind switch
+    {
+        DatFileKind.Portal => "a portal dat (client_portal.dat)",
+        DatFileKind.Cell => "a cell dat (client_cell_1.dat)",
+        DatFileKind.Local => "a language dat (client_local_English.dat)",
+        _ => $"a dat of data set {(uint)kind}",
+    };
 }

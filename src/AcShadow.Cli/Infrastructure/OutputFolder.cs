@@ -1,42 +1,178 @@
+using System.Diagnostics;
+using System.Globalization;
+using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
-using AcShadow.Cli.Infrastructure;
 
 namespace AcShadow.Cli.Infrastructure;
 
 /// <summary>
 /// Writes export files under a folder atomically: each file goes to a temporary name beside its target
-/// and is renamed over it, so an interrupted run never leaves a truncated file.
+/// (<c>NAME.PID.tmp</c>) and is renamed over it, so an interrupted run never leaves a truncated file.
+/// A killed run's temporary files are removed by the next run into the same folder.
 /// </summary>
 public static class OutputFolder
 {
+    private const string TempSuffix = ".tmp";
+
+    /// <summary>
+    /// Before any work is written: the folder exists or is created, a file can be created in it, and the
+    /// temporary files of runs no longer alive are removed (from it and its direct subfolders).
+    /// </summary>
+    public static void Prepare(string root, string option = "--out")
+    {
+        if (File.Exists(root))
+            throw new CliException(ExitCodes.OutputFailed, $"{option}: {root} is a file: pass a folder (it is created when missing)");
+        try
+        {
+            Directory.CreateDirectory(root);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"{option}: cannot create folder {root}: {e.Message} (pass a folder you can write to)");
+        }
+        var probe = Path.Combine(root, $".acshadow-write-test.{Environment.ProcessId}{TempSuffix}");
+        try
+        {
+            File.WriteAllBytes(probe, [0]);
+            File.Delete(probe);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            TryDelete(probe);
+            throw new CliException(ExitCodes.OutputFailed, $"{option}: cannot write in folder {root}: {e.Message} (pass a folder you can write to)");
+        }
+        RemoveAbandonedTemporaries(root);
+    }
+
+    /// <summary>
+    /// Refuses, before anything is written, to replace a file acshadow does not recognise as its own
+    /// (<see cref="OutputOwnership"/>) and that <paramref name="listedAsOurs"/> (the folder's own index.json)
+    /// does not list, naming it; a folder where a file belongs is refused the same way.
+    /// </summary>
+    public static void RefuseForeignFiles(string root, IEnumerable<(string RelativePath, byte[] Content)> files,
+        IReadOnlySet<string>? listedAsOurs = null, string option = "--out")
+    {
+        var foreign = new List<string>();
+        foreach (var (relative, content) in files)
+        {
+            var target = TargetPath(root, relative);
+            if (Directory.Exists(target)) foreign.Add($"{target} (a folder)");
+            else if (File.Exists(target) && listedAsOurs?.Contains(relative) != true && !OutputOwnership.IsOurs(ReadHead(target), content))
+                foreign.Add(target);
+        }
+        if (foreign.Count == 0) return;
+        throw new CliException(ExitCodes.OutputFailed,
+            $"{option}: {foreign[0]}{(foreign.Count > 1 ? $" and {foreign.Count - 1} more" : "")} would be replaced but {(foreign.Count > 1 ? "are" : "is")} not acshadow output: " +
+            "move it away or pass another folder; nothing was written");
+    }
+
+    /// <summary>
+    /// The paths an acshadow index.json in the folder lists (a damaged fixture it lists is still ours to
+    /// repair); empty when there is none or it is not an acshadow index.
+    /// </summary>
+    public static IReadOnlySet<string> ListedByIndex(string root)
+    {
+        var path = Path.Combine(root, BatchResult.IndexPath);
+        try
+        {
+            if (!File.Exists(path)) return new HashSet<string>();
+            return BatchIndexReader.Read(File.ReadAllBytes(path)).Files.Select(f => f.Path).ToHashSet(StringComparer.Ordinal);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException or InvalidOperationException)
+        {
+            return new HashSet<string>();
+        }
+    }
+
     public static long WriteAtomically(string root, OutputFile file) => WriteAtomically(root, file.RelativePath, file.Content);
 
     public static long WriteAtomically(string root, string relativePath, byte[] content)
     {
-        var target = Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
-        var temp = target + $".{Environment.ProcessId}.tmp";
+        var target = TargetPath(root, relativePath);
+        var temp = target + $".{Environment.ProcessId}{TempSuffix}";
         try
         {
             Directory.CreateDirectory(Path.GetDirectoryName(target)!);
-            File.WriteAllBytes(temp, content);
+            // Not File.WriteAllBytes: it preallocates the length first, and a file the file system cannot
+            // hold then fails as an ArgumentException instead of the write's own I/O error.
+            using (var stream = new FileStream(temp, FileMode.Create, FileAccess.Write, FileShare.None))
+                stream.Write(content);
             File.Move(temp, target, overwrite: true);
             return content.LongLength;
         }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException)
         {
             TryDelete(temp);
-            throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder)");
+            throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
         }
     }
 
     /// <summary>True when the file already holds exactly these bytes (for --incremental).</summary>
     public static bool IsUnchanged(string root, string relativePath, byte[] content)
     {
-        var target = Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar));
+        var target = TargetPath(root, relativePath);
         if (!File.Exists(target)) return false;
         var info = new FileInfo(target);
         if (info.Length != content.LongLength) return false;
         return File.ReadAllBytes(target).AsSpan().SequenceEqual(content);
+    }
+
+    /// <summary>True for the name of a temporary file this class writes (<c>NAME.PID.tmp</c>).</summary>
+    public static bool IsTemporary(string path) => TemporaryOwner(path) is not null;
+
+    private static string TargetPath(string root, string relativePath) =>
+        Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
+
+    private static int? TemporaryOwner(string path)
+    {
+        if (!path.EndsWith(TempSuffix, StringComparison.Ordinal)) return null;
+        var stem = path[..^TempSuffix.Length];
+        var dot = stem.LastIndexOf('.');
+        return dot > 0 && int.TryParse(stem.AsSpan(dot + 1), NumberStyles.None, CultureInfo.InvariantCulture, out var pid) ? pid : null;
+    }
+
+    /// <summary>A temporary file whose process is gone was left by a killed run; a live process's is its write in progress.</summary>
+    private static void RemoveAbandonedTemporaries(string root)
+    {
+        var folders = Directory.EnumerateDirectories(root).Prepend(root);
+        foreach (var folder in folders)
+        {
+            IEnumerable<string> names;
+            try { names = Directory.EnumerateFiles(folder, "*" + TempSuffix).ToArray(); }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException) { continue; }
+            foreach (var name in names)
+                if (TemporaryOwner(name) is { } pid && !IsAlive(pid)) TryDelete(name);
+        }
+    }
+
+    private static bool IsAlive(int pid)
+    {
+        if (pid == Environment.ProcessId) return true;
+        try
+        {
+            using var process = Process.GetProcessById(pid);
+            return !process.HasExited;
+        }
+        catch (Exception e) when (e is ArgumentException or InvalidOperationException)
+        {
+            return false;
+        }
+    }
+
+    private static byte[] ReadHead(string path)
+    {
+        try
+        {
+            using var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.ReadWrite);
+            var head = new byte[OutputOwnership.HeadBytes];
+            var read = stream.ReadAtLeast(head, head.Length, throwOnEndOfStream: false);
+            return head[..read];
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"cannot read {path} to check it is acshadow output: {e.Message}");
+        }
     }
 
     private static void TryDelete(string path)

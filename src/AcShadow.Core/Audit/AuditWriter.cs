@@ -13,7 +13,7 @@ namespace AcShadow.Core.Audit;
 /// </summary>
 public static class AuditWriter
 {
-    public const string JsonFormat = "acshadow.audit/1";
+    public const string JsonFormat = AcShadow.Fixtures.FileFormats.Audit;
 
     public static string Write(AuditReport report, AuditFormat format, DatSourceInfo dat, BatchSelection selection) => format switch
     {

@@ -2,7 +2,7 @@ using AcShadow.Core.Export;
 
 namespace AcShadow.Core.Batch;
 
-/// <summary>Names of index.json (docs/batch.md, schemas/acshadow.index-1.schema.json).</summary>
+/// <summary>Names of index.json (docs/formats.md, schemas/acshadow.index-1.schema.json).</summary>
 public static class BatchIndexFormat
 {
     public const string Format = AcShadow.Fixtures.FileFormats.Index;

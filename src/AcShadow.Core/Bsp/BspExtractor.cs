@@ -7,8 +7,11 @@ namespace AcShadow.Core.Bsp;
 /// <summary>
 /// Turns a GfxObj's PhysicsPolygons and PhysicsBSP into a <see cref="BspDump"/>: planes computed the
 /// retail way (<see cref="PolygonPlane"/>), only the vertices the physics polygons use, the tree
-/// flattened in preorder. Problems (degenerate or non-planar polygons, ids that point nowhere) become
-/// diagnostics naming the polygon; they never abort the extraction.
+/// flattened in preorder. Problems (degenerate or non-planar polygons, ids that point nowhere, NaN or
+/// infinite coordinates, a tree deeper than <see cref="BspLimits.MaxDepth"/>) become diagnostics naming
+/// the polygon or node; they never abort the extraction. A vertex that is not finite is left out like a
+/// missing one (its polygons get no plane), an internal node's non-finite splitting plane is written as
+/// absent, and nodes below the depth limit are dropped, so the dump holds only what a consumer can use.
 /// </summary>
 public static class BspExtractor
 {
@@ -24,15 +27,21 @@ public static class BspExtractor
         var degenerate = new List<int>();
         var nonPlanar = new List<int>();
 
+        var nonFinite = gfx.Vertices.Where(kv => !IsFinite(kv.Value)).Select(kv => (int)kv.Key).Order().ToArray();
+        if (nonFinite.Length > 0)
+            diagnostics.Add($"GfxObj 0x{gfx.Id:X8}: vertex id(s) {string.Join(", ", nonFinite)} have NaN or infinite coordinates; left out, so polygons using them get no plane");
+        var unusable = nonFinite.ToHashSet();
+
         foreach (var (id, poly) in gfx.PhysicsPolygons.OrderBy(p => p.Key))
         {
             var ids = poly.VertexIds.Select(v => (int)v).ToArray();
             var points = new List<Vector3>(ids.Length);
-            var missing = ids.Where(v => v < 0 || !gfx.Vertices.ContainsKey((ushort)v)).ToArray();
-            if (missing.Length > 0)
-                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} polygon {id}: vertex id(s) {string.Join(", ", missing)} not in the vertex array");
+            var absent = ids.Where(v => !gfx.Vertices.ContainsKey((ushort)v)).ToArray();
+            if (absent.Length > 0)
+                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} polygon {id}: vertex id(s) {string.Join(", ", absent)} not in the vertex array");
+            var missing = ids.Where(v => !gfx.Vertices.ContainsKey((ushort)v) || unusable.Contains(v)).ToArray();
             foreach (var v in ids)
-                if (v >= 0 && gfx.Vertices.TryGetValue((ushort)v, out var p)) { points.Add(p); usedVertices.Add(v); }
+                if (!unusable.Contains(v) && gfx.Vertices.TryGetValue((ushort)v, out var p)) { points.Add(p); usedVertices.Add(v); }
 
             Plane? plane = missing.Length == 0 ? PolygonPlane.Compute(points) : null;
             if (ids.Length < 3)
@@ -58,18 +67,28 @@ public static class BspExtractor
         var polygonIds = polygons.Select(p => p.Id).ToHashSet();
         var nodes = new List<BspNode>();
         var maxDepth = 0;
+        var droppedBelowLimit = 0;
         Flatten(gfx.PhysicsBsp, 0);
+        if (droppedBelowLimit > 0)
+            diagnostics.Add($"GfxObj 0x{gfx.Id:X8}: the PhysicsBSP is deeper than {BspLimits.MaxDepth} levels, which no real one is; {droppedBelowLimit} subtree(s) below that depth are dropped");
 
         var vertices = usedVertices.Select(v => new BspVertex(v, gfx.Vertices[(ushort)v])).ToArray();
         var leaves = nodes.Where(n => n.IsLeaf).ToArray();
         var stats = new BspStats(vertices.Length, polygons.Count, nodes.Count, leaves.Length, leaves.Count(l => l.Solid), maxDepth, degenerate, nonPlanar);
         return new BspDump(gfx.Id, gfx.PhysicsBsp.BoundingSphere, vertices, polygons, nodes, stats, diagnostics);
 
-        int Flatten(PhysicsBspNode node, int depth)
+        int? Flatten(PhysicsBspNode node, int depth)
         {
+            if (depth > BspLimits.MaxDepth)
+            {
+                droppedBelowLimit++;
+                return null;
+            }
             maxDepth = Math.Max(maxDepth, depth);
             var index = nodes.Count;
             nodes.Add(null!);
+            if (!IsFinite(node.BoundingSphere.Center) || !float.IsFinite(node.BoundingSphere.Radius))
+                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP node {index}: bounding sphere has NaN or infinite values");
             if (node.IsLeaf)
             {
                 var ids = node.Polygons.Select(p => (int)p).ToArray();
@@ -78,10 +97,18 @@ public static class BspExtractor
                 nodes[index] = new BspNode(index, node.Type, null, node.BoundingSphere, null, null, node.LeafIndex, node.Solid != 0, ids);
                 return index;
             }
-            int? pos = node.Pos is null ? null : Flatten(node.Pos, depth + 1);
-            int? neg = node.Neg is null ? null : Flatten(node.Neg, depth + 1);
-            nodes[index] = new BspNode(index, node.Type, node.SplittingPlane, node.BoundingSphere, pos, neg, 0, false, []);
+            Plane? splitting = node.SplittingPlane;
+            if (!IsFinite(node.SplittingPlane.Normal) || !float.IsFinite(node.SplittingPlane.D))
+            {
+                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP node {index}: splitting plane has NaN or infinite values; written as absent");
+                splitting = null;
+            }
+            var pos = node.Pos is null ? null : Flatten(node.Pos, depth + 1);
+            var neg = node.Neg is null ? null : Flatten(node.Neg, depth + 1);
+            nodes[index] = new BspNode(index, node.Type, splitting, node.BoundingSphere, pos, neg, 0, false, []);
             return index;
         }
     }
+
+    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 }

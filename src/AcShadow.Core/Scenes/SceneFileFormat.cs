@@ -2,7 +2,7 @@ using AcShadow.Core.Json;
 
 namespace AcShadow.Core.Scenes;
 
-/// <summary>Names of the scene file (docs/batch.md, schemas/acshadow.scene-1.schema.json).</summary>
+/// <summary>Names of the scene file (docs/formats.md, schemas/acshadow.scene-1.schema.json).</summary>
 public static class SceneFileFormat
 {
     public const string Format = AcShadow.Fixtures.FileFormats.Scene;

@@ -18,6 +18,11 @@ public static class ShadowShapeBuilder
         var placementFrame = PlacementResolver.Choose(setup, options.Policy);
         var placement = PlacementResolver.Describe(placementFrame);
         var parts = LookUpParts(setup, gfxObjs, diagnostics);
+        // The dat stores exactly NumParts frames per placement; a source that does not is reported here,
+        // and a part without a frame is reported where it is skipped (no-pose).
+        if (placementFrame is { } used && used.Frames.Count != parts.Length)
+            diagnostics.Add(new(DiagnosticCodes.FrameCount,
+                $"placement {used.Name} has {used.Frames.Count} frame(s) for {parts.Length} part(s): {(used.Frames.Count > parts.Length ? "the extra frames are ignored" : "parts past the last frame get no pose")}"));
         var partsHaveBsp = parts.Any(p => p?.HasPhysics == true);
 
         // CPartArray::CacheHasPhysicsBSP computes the state from the parts; Setup.Flags' bit is not read.

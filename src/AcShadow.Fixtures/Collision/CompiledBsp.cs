@@ -47,6 +47,7 @@ public sealed class CompiledBsp
         var nodes = new CompiledBspNode[dump.Nodes.Count];
         var leafPolygons = new List<int>();
         var hasParent = new bool[nodes.Length];
+        var depth = new int[nodes.Length];
         var inertSolidLeaves = 0;
         var dumpPolygonIds = dump.Polygons.Select(p => p.Id).ToHashSet();
 
@@ -79,8 +80,8 @@ public sealed class CompiledBsp
             {
                 log.Add(CollisionDiagnosticCodes.MalformedNode, $"{name} BSP node {i}: internal node without a finite splitting plane; both children are visited and the centre goes to the positive side");
             }
-            var pos = Child(node.Pos, i, "positive", nodes.Length, hasParent, name, log);
-            var neg = Child(node.Neg, i, "negative", nodes.Length, hasParent, name, log);
+            var pos = Child(node.Pos, i, "positive", nodes.Length, hasParent, depth, name, log);
+            var neg = Child(node.Neg, i, "negative", nodes.Length, hasParent, depth, name, log);
             nodes[i] = new CompiledBspNode(false, center, radius, normal, d, pos, neg, false, 0, 0, 0, 0);
         }
 
@@ -147,19 +148,22 @@ public sealed class CompiledBsp
         return (Vector3.Zero, float.PositiveInfinity);
     }
 
-    private static int Child(int? child, int parent, string side, int count, bool[] hasParent, string name, DiagnosticLog log)
+    /// <summary>Children come after their parent, so the parent's depth is known when its children are checked.</summary>
+    private static int Child(int? child, int parent, string side, int count, bool[] hasParent, int[] depth, string name, DiagnosticLog log)
     {
         if (child is not { } c) return -1;
         string? problem = null;
         if (c < 0 || c >= count) problem = "is out of range";
         else if (c <= parent) problem = "does not come after its parent (the list is preorder)";
         else if (hasParent[c]) problem = "is already another node's child";
+        else if (depth[parent] + 1 > BspLimits.MaxDepth) problem = $"lies deeper than {BspLimits.MaxDepth} levels, which no real PhysicsBSP does";
         if (problem is not null)
         {
             log.Add(CollisionDiagnosticCodes.MalformedNode, $"{name} BSP node {parent}: {side} child index {c.ToString(CultureInfo.InvariantCulture)} {problem}; treated as absent");
             return -1;
         }
         hasParent[c] = true;
+        depth[c] = depth[parent] + 1;
         return c;
     }
 

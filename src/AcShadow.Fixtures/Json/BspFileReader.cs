@@ -60,15 +60,15 @@ public static class BspFileReader
 
     internal static string Str(JsonElement e, string name) => Prop(e, name).GetString() ?? throw new FormatException($"\"{name}\" is null");
     internal static int Int(JsonElement e, string name) => Prop(e, name).GetInt32();
-    internal static float Float(JsonElement e, string name) => Single(Prop(e, name));
+    internal static float Float(JsonElement e, string name) => Number(Prop(e, name));
 
-    /// <summary>The canonical writer writes a NaN or infinite float (a damaged dat's) as null: it reads back as NaN.</summary>
-    private static float Single(JsonElement e) => e.ValueKind == JsonValueKind.Null ? float.NaN : e.GetSingle();
+    /// <summary>The writers put null where a float is NaN or infinite (JSON has no such numbers); it reads back as NaN.</summary>
+    internal static float Number(JsonElement e) => e.ValueKind == JsonValueKind.Null ? float.NaN : e.GetSingle();
     internal static IEnumerable<JsonElement> Arr(JsonElement e, string name) => Prop(e, name).EnumerateArray();
 
     internal static Vector3 Vec(JsonElement e)
     {
-        var a = e.EnumerateArray().Select(Single).ToArray();
+        var a = e.EnumerateArray().Select(Number).ToArray();
         if (a.Length != 3) throw new FormatException("a vector needs 3 numbers");
         return new Vector3(a[0], a[1], a[2]);
     }

@@ -11,6 +11,7 @@ public static class DiagnosticCodes
 {
     public const string MissingGfxObj = "missing-gfxobj";
     public const string NoPose = "no-pose";
+    public const string FrameCount = "frame-count";
     public const string FlagMismatch = "flag-mismatch";
     public const string NoShapes = "no-shapes";
     public const string NonUniformScale = "non-uniform-scale";

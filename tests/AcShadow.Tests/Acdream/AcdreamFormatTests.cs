@@ -8,8 +8,9 @@ namespace AcShadow.Tests.Acdream;
 
 /// <summary>
 /// `--format acdream`: the door's parts as acdream's GfxObj fixtures. The files are read the way acdream's
-/// tests would read them: System.Text.Json into records with acdream's property names, case-sensitive,
-/// unknown members an error (source-generated, so no reflection).
+/// tests read them: System.Text.Json into records with acdream's property names and types (uint id,
+/// ushort polygon ids, int sides type), case-sensitive; unknown members are refused here, which is
+/// stricter than acdream. Source-generated, so no reflection.
 /// </summary>
 public class AcdreamFormatTests
 {
@@ -28,7 +29,7 @@ public class AcdreamFormatTests
             var canonical = BspFileReader.Read(File.ReadAllText(Path.Combine(CommittedFixtures, BspFileFormat.PathFor(id))));
             Assert.Equal(canonical.BoundingSphere.Center, Vec(gfx.BoundingSphereOrigin));
             Assert.Equal(canonical.BoundingSphere.Radius, gfx.BoundingSphereRadius);
-            Assert.Equal(canonical.Polygons.Where(p => p.Plane is not null).Select(p => p.Id), gfx.ResolvedPolygons.Select(p => p.Id));
+            Assert.Equal(canonical.Polygons.Where(p => p.Plane is not null).Select(p => p.Id), gfx.ResolvedPolygons.Select(p => (int)p.Id));
             foreach (var polygon in gfx.ResolvedPolygons)
             {
                 var source = canonical.Polygons.Single(p => p.Id == polygon.Id);
@@ -93,7 +94,7 @@ public class AcdreamFormatTests
 
 public sealed record Xyz(float X, float Y, float Z);
 public sealed record AcdreamPlane(Xyz Normal, float D);
-public sealed record AcdreamPolygon(int Id, int NumPoints, int SidesType, AcdreamPlane Plane, IReadOnlyList<Xyz> Vertices);
+public sealed record AcdreamPolygon(ushort Id, int NumPoints, int SidesType, AcdreamPlane Plane, IReadOnlyList<Xyz> Vertices);
 public sealed record GfxObjFixture(uint GfxObjId, Xyz BoundingSphereOrigin, float BoundingSphereRadius, IReadOnlyList<AcdreamPolygon> ResolvedPolygons);
 
 [JsonSourceGenerationOptions(UnmappedMemberHandling = JsonUnmappedMemberHandling.Disallow, RespectRequiredConstructorParameters = true)]

@@ -58,7 +58,7 @@ public class DumpCommandTests
 
     [Theory]
     [InlineData(2, "'door' is not a Setup id", "--setup", "door")]
-    [InlineData(2, "outside the Setup range", "--setup", "0x010044B5")]
+    [InlineData(2, "is a GfxObj id, not a Setup id", "--setup", "0x010044B5")]
     [InlineData(2, "outside the Setup range", "--setup", "1234")]
     [InlineData(2, "not a policy", "--setup", "0x020019FF", "--policy", "best")]
     [InlineData(2, "not a positive number", "--setup", "0x020019FF", "--scale", "-1")]
@@ -98,7 +98,7 @@ public class DumpCommandTests
         using var datFolder = SampleDat.WriteToTempFolder();
         var run = CliRun.Of("dump", "--setup", "0x020019FF", "--dat", Path.Combine(datFolder.Path, "client_cell_1.dat"), "--out", outDir.Path);
         Assert.Equal(3, run.ExitCode);
-        Assert.Contains("is a cell dat, not a portal dat: pass client_portal.dat", Assert.Single(run.ErrorLines));
+        Assert.Contains("is a cell dat (client_cell_1.dat), not a portal dat (client_portal.dat): pass client_portal.dat", Assert.Single(run.ErrorLines));
         Assert.Empty(outDir.Files());
     }
 

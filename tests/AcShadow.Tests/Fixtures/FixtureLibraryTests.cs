@@ -38,6 +38,16 @@ public class FixtureLibraryTests
         }
     }
 
+    [Fact]
+    public void The_readme_example_blocks_a_sphere_in_the_doorway_and_not_one_beside_it()
+    {
+        var door = Committed.Setup(0x020019FF)
+            .PlaceAt(new Vector3(32580f, 34663.9f, 12f), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 2));
+        Assert.True(door.Overlaps(worldCenter: new Vector3(32580f, 34664.5f, 13f), radius: 0.5f));
+        Assert.False(door.Overlaps(worldCenter: new Vector3(32583f, 34668f, 13f), radius: 0.5f));
+        Assert.Throws<ArgumentException>(() => Committed.Setup(0x020019FF).PlaceAt(Vector3.Zero, default));
+    }
+
     [Theory]
     [InlineData("setups/0x020019FF.shadow.json", "acshadow.shadow/2", "a version this library does not read (it reads \"acshadow.shadow/1\")")]
     [InlineData("setups/0x020019FF.shadow.json", "acshadow.bsp/1", "is not \"acshadow.shadow/1\"; wrong kind of file?")]

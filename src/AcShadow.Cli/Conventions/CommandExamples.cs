@@ -1,0 +1,57 @@
+namespace AcShadow.Cli.Conventions;
+
+/// <summary>
+/// The examples `--help` prints under each command: one line each, pasteable as they stand (the
+/// sample-data ones need no dat). A test parses every one of them.
+/// </summary>
+public static class CommandExamples
+{
+    public static IReadOnlyDictionary<string, string[]> ByCommand { get; } = new Dictionary<string, string[]>
+    {
+        ["acshadow"] =
+        [
+            "acshadow dump --setup 0x020019FF",
+            "acshadow batch --doors --all --landblock 0xA9B4 --out my-fixtures",
+            "acshadow formats",
+            "acshadow completions bash",
+        ],
+        ["dump"] =
+        [
+            "acshadow dump --setup 0x020019FF",
+            "acshadow dump --setup 0x020019FF --dat ~/ac/client_portal.dat --out my-fixtures --format both",
+            "acshadow dump --setup 0x020019FF --policy union --out union-door",
+            "acshadow @dump-door.rsp",
+        ],
+        ["batch"] =
+        [
+            "acshadow batch --doors --all --landblock 0xA9B4 --out my-fixtures",
+            "acshadow batch --doors --out door-fixtures --format acdream --jobs 4",
+            "acshadow batch --setups ids.txt --out fixtures --incremental --quiet",
+        ],
+        ["audit"] =
+        [
+            "acshadow audit --only-bsp --sort coverage",
+            "acshadow audit --doors --format csv --out audit.csv",
+            "acshadow audit --all --chart --format md",
+        ],
+        ["verify"] =
+        [
+            "acshadow verify --fixtures fixtures",
+            "acshadow verify --fixtures my-fixtures --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat",
+        ],
+        ["chart"] =
+        [
+            "acshadow chart --setup 0x020019FF --out chart-door",
+            "acshadow chart --doors --out chart-doors --probe-radius 0.5 --spacing 0.25",
+        ],
+        ["formats"] =
+        [
+            "acshadow formats",
+        ],
+        ["completions"] =
+        [
+            "acshadow completions bash >> ~/.bashrc",
+            "acshadow completions pwsh >> $PROFILE",
+        ],
+    };
+}

@@ -1,0 +1,33 @@
+using System.Text;
+
+namespace AcShadow.Cli.Infrastructure;
+
+/// <summary>
+/// Whether an existing file is acshadow's to replace: its first line holding a letter must be the one
+/// acshadow writes there, digits aside. That is the format declaration of a JSON file
+/// (<c>"format": "acshadow.shadow/1",</c>; acdream's <c>"GfxObjId": …</c>), a CSV's header row, an SVG's
+/// root element; the digits may differ (versions, ids, sizes), nothing else. A user's own file of the
+/// same name differs there, and is left alone.
+/// </summary>
+public static class OutputOwnership
+{
+    /// <summary>The signature line must lie within this many bytes of the start.</summary>
+    public const int HeadBytes = 4096;
+
+    public static bool IsOurs(ReadOnlySpan<byte> existingHead, ReadOnlySpan<byte> newContent)
+    {
+        var ours = Signature(newContent);
+        return ours is not null && ours == Signature(existingHead);
+    }
+
+    private static string? Signature(ReadOnlySpan<byte> bytes)
+    {
+        var text = Encoding.UTF8.GetString(bytes[..Math.Min(bytes.Length, HeadBytes)]);
+        foreach (var line in text.Split('\n'))
+        {
+            if (!line.Any(char.IsAsciiLetter)) continue;
+            return new string(line.TrimEnd('\r').Where(c => !char.IsAsciiDigit(c)).ToArray());
+        }
+        return null;
+    }
+}
