@@ -1,4 +1,24 @@
+using AcShadow.Bench.Harness;
 using BenchmarkDotNet.Running;
 
-// dotnet run -c Release --project tools/AcShadow.Bench -- --filter '*'
-BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+// dotnet run -c Release --project tools/AcShadow.Bench -- harness --cli PATH [--small]   (scripts/bench.sh)
+// dotnet run -c Release --project tools/AcShadow.Bench -- --filter '*'                   (BenchmarkDotNet)
+switch (args.FirstOrDefault())
+{
+    case "harness":
+        try
+        {
+            var report = BenchHarness.Run(HarnessOptions.Parse(args[1..]), Console.Out);
+            return report.Checks.All(c => c.Passed) ? 0 : 1;
+        }
+        catch (ArgumentException e)
+        {
+            Console.Error.WriteLine($"bench: {e.Message}");
+            return 2;
+        }
+    case "floor" or "naive":
+        return Workloads.Run(args);
+    default:
+        BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+        return 0;
+}

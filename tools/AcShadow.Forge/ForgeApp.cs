@@ -38,15 +38,25 @@ public static class ForgeApp
             WriteDats(new ForgedDats(portal, cell, spec.GfxObjs.Count, spec.Setups.Count, spec.Landblocks.Count), parse.GetValue(outDir)!, stdout);
         }));
 
-        var setupCount = new Option<int>("--setups") { Description = "How many Setups (about 1.5 GfxObjs each)", DefaultValueFactory = _ => ScaleSpecGenerator.DefaultSetups };
-        var seed = new Option<int>("--seed") { Description = "Random seed; same seed, same bytes", DefaultValueFactory = _ => ScaleSpecGenerator.DefaultSeed };
-        var scale = new Command("scale", "Forge a realistic-scale dat for benchmarks") { outDir, setupCount, seed, writeSpec };
+        var setupCount = new Option<int>("--setups") { Description = "How many Setups", DefaultValueFactory = _ => ScaleSpecGenerator.DefaultSetups };
+        var gfxObjCount = new Option<int?>("--gfxobjs") { Description = $"How many GfxObjs (default: {ScaleSpecGenerator.DefaultGfxObjs} for {ScaleSpecGenerator.DefaultSetups} Setups, in proportion otherwise)" };
+        var seed = new Option<int>("--seed") { Description = "Random seed; same seed and counts, same bytes", DefaultValueFactory = _ => ScaleSpecGenerator.DefaultSeed };
+        var scale = new Command("scale", "Forge a realistic-scale dat for benchmarks") { outDir, setupCount, gfxObjCount, seed, writeSpec };
         scale.SetAction(parse => Guard(parse.GetValue(verbose), stderr, () =>
         {
             var n = parse.GetValue(setupCount);
             if (n < 1 || n > ScaleSpecGenerator.MaxSetups) throw new UsageException($"--setups {n}: give 1-{ScaleSpecGenerator.MaxSetups}");
-            var spec = ScaleSpecGenerator.Generate(n, parse.GetValue(seed));
-            WriteDats(SpecCompiler.Compile(spec), parse.GetValue(outDir)!, stdout);
+            var m = parse.GetValue(gfxObjCount) ?? ScaleSpecGenerator.GfxObjsFor(n);
+            if (m < ScaleSpecGenerator.MinGfxObjs(n) || m > ScaleSpecGenerator.MaxGfxObjs)
+                throw new UsageException($"--gfxobjs {m}: give {ScaleSpecGenerator.MinGfxObjs(n)}-{ScaleSpecGenerator.MaxGfxObjs} for {n} Setups (the doors alone need a leaf each)");
+            var clock = System.Diagnostics.Stopwatch.StartNew();
+            var spec = ScaleSpecGenerator.Generate(n, parse.GetValue(seed), m);
+            var generated = clock.Elapsed;
+            var dats = SpecCompiler.Compile(spec);
+            var compiled = clock.Elapsed;
+            WriteDats(dats, parse.GetValue(outDir)!, stdout);
+            stdout.WriteLine(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                $"generated in {clock.Elapsed.TotalSeconds:0.0} s (spec {generated.TotalSeconds:0.0} s, BSPs and dat {(compiled - generated).TotalSeconds:0.0} s on {Environment.ProcessorCount} core(s), writing {(clock.Elapsed - compiled).TotalSeconds:0.0} s)"));
             if (parse.GetValue(writeSpec) is { } path) WriteSpec(spec, path, stdout);
         }));
 

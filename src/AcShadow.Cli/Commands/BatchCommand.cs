@@ -6,6 +6,7 @@ using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 
 namespace AcShadow.Cli.Commands;
@@ -25,7 +26,7 @@ public static class BatchCommand
         var scale = CommonOptions.Scale();
         var jobs = SelectionOptions.Jobs();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
-        var incremental = new Option<bool>("--incremental") { Description = "leave files whose content would not change untouched" };
+        var incremental = new Option<bool>("--incremental") { Description = "skip Setups whose dat bytes (and their parts') did not change since the last --incremental run into DIR, and leave files whose content would not change untouched" };
         var format = FormatOption.Create();
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
         {
@@ -54,82 +55,115 @@ public static class BatchCommand
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
         OutputFolder.Prepare(outDir);
-        var engine = new ExportEngine(dat.Portal, options);
         var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
         {
             Formats = formats,
         };
+        RefuseForeignFiles(outDir, plan);
+        // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
+        var source = new BoundedDatSource(dat.Portal.Archive, dat.Portal.Info);
+        var reuse = new BatchReuse(incremental ? ReadState(outDir) : null, IncrementalState.ToolKey(options, formats),
+            dat.Portal.Archive.ReadObjectBytes,
+            file => HasSize(outDir, file));
 
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet, "setups");
-        BatchResult result;
-        try
-        {
-            result = BatchRunner.Run(engine, plan, inputs, jobs, progress.Report);
-        }
-        finally
-        {
-            progress.Finish();
-        }
-
-        var exported = clock.Elapsed;
-        OutputFolder.RefuseForeignFiles(outDir, result.Files.Select(f => (f.RelativePath, f.Content)).Append((BatchResult.IndexPath, result.IndexJson)),
-            OutputFolder.ListedByIndex(outDir));
-        var writing = new ProgressReporter(console.Error, console.IsTerminal, quiet, "files written");
-        int filesWritten, unchanged;
-        long written;
-        try
-        {
-            (filesWritten, unchanged, written) = Write(outDir, result, incremental, jobs, writing.Report);
-        }
-        finally
-        {
-            writing.Finish();
-        }
-
-        var o = console.Out;
-        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, scale {options.EntityScale}): " +
-            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s)"));
-        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  files: {filesWritten} written ({written} bytes){(incremental ? $", {unchanged} unchanged and left alone" : "")}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
-        foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
-            o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
-        if (result.Diagnostics.Count > 0)
-            o.WriteLine($"  diagnostics: {result.Diagnostics.Count} in {result.Diagnostics.Select(d => d.Id).Distinct().Count()} setup(s) (listed in each file's \"diagnostics\")");
-        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  wall time {clock.Elapsed.TotalSeconds:0.000} s with {jobs} job(s) (dat and export {exported.TotalSeconds:0.000} s, writing {(clock.Elapsed - exported).TotalSeconds:0.000} s)"));
-        return ExitCodes.Ok;
-    }
-
-    /// <summary>
-    /// Files in parallel (each atomically, so order does not matter), then index.json last: an index on
-    /// disk only ever describes files already written.
-    /// </summary>
-    private static (int Written, int Unchanged, long Bytes) Write(string outDir, BatchResult result, bool incremental, int jobs,
-        Action<BatchProgress> progress)
-    {
-        int filesWritten = 0, unchanged = 0, done = 0;
-        long bytes = 0;
-        var total = result.Files.Count + 1;
-        void WriteOne(string path, byte[] content)
+        int filesWritten = 0, unchanged = 0;
+        long written = 0;
+        void Write(string path, byte[] content)
         {
             if (incremental && OutputFolder.IsUnchanged(outDir, path, content)) Interlocked.Increment(ref unchanged);
             else
             {
-                Interlocked.Add(ref bytes, OutputFolder.WriteAtomically(outDir, path, content));
+                Interlocked.Add(ref written, OutputFolder.WriteAtomically(outDir, path, content));
                 Interlocked.Increment(ref filesWritten);
             }
-            progress(new BatchProgress(Interlocked.Increment(ref done), total));
         }
+
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet, "setups");
+        BatchSummary result;
         try
         {
-            Parallel.ForEach(result.Files, new ParallelOptions { MaxDegreeOfParallelism = jobs }, f => WriteOne(f.RelativePath, f.Content));
+            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content), reuse, progress.Report);
         }
         catch (AggregateException e) when (e.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first)
         {
             throw first;
         }
-        WriteOne(BatchResult.IndexPath, result.IndexJson);
-        return (filesWritten, unchanged, bytes);
+        finally
+        {
+            progress.Finish();
+        }
+        // The state for the next --incremental run, then index.json, last: an index on disk only ever
+        // describes files already written.
+        if (incremental) Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
+        Write(BatchResult.IndexPath, result.IndexJson);
+        // Files of Setups reused unseen are unchanged too.
+        if (incremental) unchanged = result.Files.Count + 2 - filesWritten;
+
+        var o = console.Out;
+        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, scale {options.EntityScale}): " +
+            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s)"));
+        var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
+        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  files: {filesWritten} written ({written} bytes){(incremental ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
+        foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
+            o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
+        if (result.Diagnostics.Diagnostics > 0)
+            o.WriteLine($"  diagnostics: {result.Diagnostics.Diagnostics} in {result.Diagnostics.Setups} setup(s) (listed in each file's \"diagnostics\")");
+        o.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  wall time {clock.Elapsed.TotalSeconds:0.000} s with {jobs} job(s)"));
+        return ExitCodes.Ok;
+    }
+
+    /// <summary>
+    /// Files stream to disk as they are made, so the check that no file acshadow does not own gets replaced
+    /// runs first, over what is already there: every file in the places a batch writes (the planned Setups'
+    /// shadow files, gfxobjs/, scene.json, index.json, incremental.json) that the folder's index.json does
+    /// not list must carry the signature of the acshadow format its name stands for.
+    /// </summary>
+    private static void RefuseForeignFiles(string outDir, BatchPlan plan)
+    {
+        var listed = OutputFolder.ListedByIndex(outDir);
+        var candidates = new List<(string Path, byte[] Head)>();
+        void Consider(string relative, string format)
+        {
+            if (!listed.Contains(relative) && (File.Exists(Path.Combine(outDir, relative)) || Directory.Exists(Path.Combine(outDir, relative))))
+                candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes($"{{\n  \"format\": \"{format}\",\n")));
+        }
+        foreach (var setup in plan.Setups) Consider(ShadowFileFormat.PathFor(setup.Id), ShadowFileFormat.Format);
+        var gfxobjs = Path.Combine(outDir, "gfxobjs");
+        if (Directory.Exists(gfxobjs))
+            foreach (var file in Directory.EnumerateFiles(gfxobjs, "*.json").Order(StringComparer.Ordinal))
+            {
+                var relative = "gfxobjs/" + Path.GetFileName(file);
+                if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, BspFileFormat.Format);
+                else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && !listed.Contains(relative))
+                    candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
+            }
+        if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
+        Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
+        Consider(IncrementalState.Path, IncrementalState.Format);
+        OutputFolder.RefuseForeignFiles(outDir, candidates, listed);
+    }
+
+    /// <summary>Whether a file the previous run wrote is still there with the size it recorded.</summary>
+    private static bool HasSize(string outDir, FileEntry file)
+    {
+        var info = new FileInfo(Path.Combine(outDir, file.RelativePath.Replace('/', Path.DirectorySeparatorChar)));
+        return info.Exists && info.Length == file.Bytes;
+    }
+
+    /// <summary>The previous run's incremental.json, or null when there is none or it is unreadable (then everything is exported).</summary>
+    private static IncrementalState? ReadState(string outDir)
+    {
+        var path = Path.Combine(outDir, IncrementalState.Path);
+        try
+        {
+            return File.Exists(path) ? IncrementalStateFile.TryRead(File.ReadAllBytes(path)) : null;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return null;
+        }
     }
 }

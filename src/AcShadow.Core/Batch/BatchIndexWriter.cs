@@ -1,4 +1,3 @@
-using System.Security.Cryptography;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
@@ -13,10 +12,10 @@ namespace AcShadow.Core.Batch;
 /// </summary>
 public static class BatchIndexWriter
 {
-    public static byte[] Write(BatchInputs inputs, IReadOnlyList<OutputFile> files, IReadOnlyList<SkippedItem> skipped) =>
+    public static byte[] Write(BatchInputs inputs, IReadOnlyList<FileEntry> files, IReadOnlyList<SkippedItem> skipped) =>
         CanonicalJsonWriter.WriteUtf8(ToJson(inputs, files, skipped));
 
-    public static JsonObj ToJson(BatchInputs inputs, IReadOnlyList<OutputFile> files, IReadOnlyList<SkippedItem> skipped) => new JsonObj()
+    public static JsonObj ToJson(BatchInputs inputs, IReadOnlyList<FileEntry> files, IReadOnlyList<SkippedItem> skipped) => new JsonObj()
         .Add("format", BatchIndexFormat.Format)
         .Add("inputs", Inputs(inputs))
         .Add("summary", new JsonObj()
@@ -25,7 +24,7 @@ public static class BatchIndexWriter
             .Add("bspDumps", files.Count(f => f.Kind == OutputKind.Bsp))
             .Add("scenes", files.Count(f => f.Kind == OutputKind.Scene))
             .Add("skipped", skipped.Count)
-            .Add("bytes", files.Sum(f => f.Content.LongLength)))
+            .Add("bytes", files.Sum(f => f.Bytes)))
         .Add("skipped", JsonArr.Of(skipped, s => new JsonObj()
             .Add("id", JsonIds.Format(s.Id)).Add("reason", s.Reason).Add("from", JsonArr.Of(s.From.Names()))))
         .Add("files", JsonArr.Of(files, File));
@@ -55,12 +54,12 @@ public static class BatchIndexWriter
         .Add("iteration", info.Iteration)
         .Add("blockSize", info.BlockSize);
 
-    private static JsonNode File(OutputFile f) => new JsonObj()
+    private static JsonNode File(FileEntry f) => new JsonObj()
         .Add("path", f.RelativePath)
         .Add("kind", BatchIndexFormat.KindName(f.Kind))
         .Add("id", JsonIds.Format(f.Id))
         .Add("shapes", f.ShapeCount)
         .Add("polygons", f.PolygonCount)
-        .Add("bytes", f.Content.LongLength)
-        .Add("sha256", Convert.ToHexStringLower(SHA256.HashData(f.Content)));
+        .Add("bytes", f.Bytes)
+        .Add("sha256", f.Sha256);
 }

@@ -1,11 +1,10 @@
 using AcShadow.Core.Export;
-using AcShadow.Core.Shapes;
 
 namespace AcShadow.Core.Batch;
 
 /// <summary>
-/// A batch run's output in memory: every file (sorted by path, each once), index.json, what was skipped,
-/// and counts for the summary. The same inputs give the same bytes whatever the parallelism.
+/// A batch run's output in memory (what verify compares): every file (sorted by path, each once),
+/// index.json, what was skipped, and counts. The same inputs give the same bytes whatever the parallelism.
 /// </summary>
 public sealed record BatchResult(
     IReadOnlyList<OutputFile> Files,
@@ -14,7 +13,7 @@ public sealed record BatchResult(
     int SetupsWritten,
     int BspDumps,
     int Scenes,
-    IReadOnlyList<(uint Id, Diagnostic Diagnostic)> Diagnostics)
+    DiagnosticCount Diagnostics)
 {
     public const string IndexPath = "index.json";
 

@@ -1,79 +1,123 @@
+using System.Collections.Concurrent;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 
 namespace AcShadow.Core.Batch;
 
 /// <summary>
-/// Runs a <see cref="BatchPlan"/> through the one <see cref="ExportEngine"/>: Setups in parallel (each
-/// result lands in its plan slot, so the order never depends on scheduling), then the scene, then
-/// index.json. Pure: returns bytes; the caller writes them.
+/// Runs a <see cref="BatchPlan"/> through the one <see cref="ExportEngine"/>: Setups in parallel, each
+/// file handed to the caller's writer as soon as it is made (each path once; a shared GfxObj's dump by
+/// whichever Setup needs it first), in the formats the inputs ask for, then the scene, then index.json
+/// from the files' entries, sorted by path, so the output never depends on scheduling. Only entries are
+/// kept, never file bytes: memory stays bounded whatever the dat's size. Pure: the caller writes.
 /// </summary>
 public static class BatchRunner
 {
-    public static BatchResult Run(ExportEngine engine, BatchPlan plan, BatchInputs inputs, int jobs,
+    /// <summary>Everything in memory (verify): the same run, its files collected and sorted by path.</summary>
+    public static BatchResult Run(IDatSource dat, ShapeBuildOptions options, BatchPlan plan, BatchInputs inputs, int jobs,
         Action<BatchProgress>? progress = null, CancellationToken cancellation = default)
     {
+        var files = new ConcurrentDictionary<string, OutputFile>(StringComparer.Ordinal);
+        var summary = Stream(dat, options, plan, inputs, jobs, f => files.TryAdd(f.RelativePath, f), null, progress, cancellation);
+        var ordered = files.Values.OrderBy(f => f.RelativePath, StringComparer.Ordinal).ToArray();
+        return new BatchResult(ordered, summary.IndexJson, summary.Skipped, summary.SetupsWritten, summary.BspDumps, summary.Scenes, summary.Diagnostics);
+    }
+
+    /// <param name="write">Called from worker threads, once per file path, as each file is made.</param>
+    /// <param name="reuse">With --incremental: the previous run's state; a Setup whose inputs are unchanged is not decoded.</param>
+    public static BatchSummary Stream(IDatSource dat, ShapeBuildOptions options, BatchPlan plan, BatchInputs inputs, int jobs,
+        Action<OutputFile> write, BatchReuse? reuse, Action<BatchProgress>? progress = null, CancellationToken cancellation = default)
+    {
         ArgumentOutOfRangeException.ThrowIfLessThan(jobs, 1);
+        IReadOnlyList<FileEntry> Emit(OutputFile canonical)
+        {
+            var entries = new List<FileEntry>(2);
+            foreach (var file in OutputFormatSelection.For(canonical, inputs.Formats))
+            {
+                write(file);
+                entries.Add(FileEntry.Of(file));
+            }
+            return entries;
+        }
+        var engine = new ExportEngine(dat, options, Emit);
         var total = plan.Setups.Count + (plan.Scene is null ? 0 : 1);
         var done = 0;
-        var results = new (SetupExport? Export, string? Problem)[plan.Setups.Count];
+        var results = new SetupOutcome[plan.Setups.Count];
         Parallel.For(0, plan.Setups.Count, new ParallelOptions { MaxDegreeOfParallelism = jobs, CancellationToken = cancellation }, i =>
         {
-            results[i] = ExportOne(engine, plan.Setups[i].Id);
+            var id = plan.Setups[i].Id;
+            results[i] = reuse?.TryReuse(id) ?? ExportOne(engine, id, Emit, reuse);
             progress?.Invoke(new BatchProgress(Interlocked.Increment(ref done), total));
         });
 
-        var files = new SortedDictionary<string, OutputFile>(StringComparer.Ordinal);
+        var files = new SortedDictionary<string, FileEntry>(StringComparer.Ordinal);
         var skipped = new List<SkippedItem>(plan.Skipped);
-        var diagnostics = new List<(uint, Diagnostic)>();
-        var exports = new Dictionary<uint, SetupExport>();
+        var setupFiles = new Dictionary<uint, string>();
         var problems = new Dictionary<uint, string>();
+        var records = new List<IncrementalSetup>();
+        int diagnostics = 0, withDiagnostics = 0, reused = 0;
         for (var i = 0; i < results.Length; i++)
         {
             var planned = plan.Setups[i];
-            var (export, problem) = results[i];
-            if (export is null)
+            var outcome = results[i];
+            if (outcome.Problem is { } problem)
             {
-                var reason = problem ?? SkippedItem.NotInDat;
-                problems[planned.Id] = reason;
-                skipped.Add(new SkippedItem(planned.Id, reason, planned.From));
+                problems[planned.Id] = problem;
+                skipped.Add(new SkippedItem(planned.Id, problem, planned.From));
                 continue;
             }
-            exports[planned.Id] = export;
-            foreach (var file in export.Files) files.TryAdd(file.RelativePath, file);
-            diagnostics.AddRange(export.Diagnostics.Select(d => (planned.Id, d)));
+            foreach (var file in outcome.Files) files[file.RelativePath] = file;
+            setupFiles[planned.Id] = ShadowFileFormat.PathFor(planned.Id);
+            diagnostics += outcome.Record.Diagnostics;
+            if (outcome.Record.Diagnostics > 0) withDiagnostics++;
+            if (outcome.Reused) reused++;
+            records.Add(outcome.Record);
         }
         foreach (var id in plan.Skipped.Select(s => s.Id)) problems.TryAdd(id, SkippedItem.NotInDat);
 
         if (plan.Scene is { } scene)
         {
-            var sceneExport = SceneExporter.Export(scene, engine, exports, problems);
-            files[sceneExport.SceneFile.RelativePath] = sceneExport.SceneFile;
-            foreach (var file in sceneExport.BspFiles) files.TryAdd(file.RelativePath, file);
+            var sceneExport = SceneExporter.Export(scene, engine, setupFiles, problems);
+            foreach (var entry in Emit(sceneExport.SceneFile)) files[entry.RelativePath] = entry;
+            foreach (var entry in sceneExport.BspEntries) files.TryAdd(entry.RelativePath, entry);
             skipped.AddRange(sceneExport.Skipped);
             progress?.Invoke(new BatchProgress(Interlocked.Increment(ref done), total));
         }
 
-        var ordered = OutputFormatSelection.Apply(files.Values, inputs.Formats);
+        var ordered = files.Values.ToArray();
         var sortedSkipped = skipped.OrderBy(s => s.Id).ToArray();
         var index = BatchIndexWriter.Write(inputs, ordered, sortedSkipped);
-        return new BatchResult(ordered, index, sortedSkipped, exports.Count,
+        var state = new IncrementalState(IncrementalState.ToolKey(options, inputs.Formats), records);
+        return new BatchSummary(ordered, index, sortedSkipped, records.Count,
             ordered.Where(f => f.Kind is OutputKind.Bsp or OutputKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
-            ordered.Count(f => f.Kind == OutputKind.Scene), diagnostics);
+            ordered.Count(f => f.Kind == OutputKind.Scene), new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
     }
 
     /// <summary>A Setup that cannot be decoded is skipped with the reason; other Setups go on.</summary>
-    private static (SetupExport?, string?) ExportOne(ExportEngine engine, uint id)
+    private static SetupOutcome ExportOne(ExportEngine engine, uint id, Func<OutputFile, IReadOnlyList<FileEntry>> emit, BatchReuse? reuse)
     {
+        SetupExport? export;
         try
         {
-            return (engine.ExportSetup(id), null);
+            export = engine.ExportSetup(id);
         }
         catch (DatFormatException e)
         {
-            return (null, $"unreadable: {e.Message}");
+            return SetupOutcome.Failed($"unreadable: {e.Message}");
         }
+        if (export is null) return SetupOutcome.Failed(SkippedItem.NotInDat);
+        FileEntry[] files = [.. emit(export.Shadow), .. export.BspEntries];
+        var parts = export.Setup.Parts.Distinct().Order().ToArray();
+        var fingerprint = reuse?.Fingerprint(id, parts) ?? "";
+        return new SetupOutcome(null, files, new IncrementalSetup(id, fingerprint, parts, export.Diagnostics.Count, files), false);
     }
+}
+
+/// <summary>One Setup's part of a run: its files' entries and its incremental record, or why it was skipped.</summary>
+public sealed record SetupOutcome(string? Problem, IReadOnlyList<FileEntry> Files, IncrementalSetup Record, bool Reused)
+{
+    public static SetupOutcome Failed(string problem) => new(problem, [], new IncrementalSetup(0, "", [], 0, []), false);
 }

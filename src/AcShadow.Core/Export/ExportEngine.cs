@@ -11,9 +11,14 @@ namespace AcShadow.Core.Export;
 /// shapes, then dump each GfxObj a BSP shape references. A GfxObj's dump is made once per engine
 /// however many Setups share it. Thread-safe.
 /// </summary>
-public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options)
+/// <param name="bspSink">
+/// When given, each BSP dump is handed to it once, as soon as it is made, and the engine keeps only the
+/// entries of the files the sink wrote for it: a batch streams its files and its memory does not grow with
+/// the dat. Without it the engine keeps every dump's bytes and <see cref="SetupExport.BspFiles"/> holds them.
+/// </param>
+public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func<OutputFile, IReadOnlyList<FileEntry>>? bspSink = null)
 {
-    private readonly ConcurrentDictionary<uint, Lazy<(OutputFile? File, IReadOnlyList<Diagnostic> Diagnostics)>> _bsp = new();
+    private readonly ConcurrentDictionary<uint, Lazy<BspDumpResult>> _bsp = new();
 
     public IDatSource Dat { get; } = dat;
     public ShapeBuildOptions Options { get; } = options;
@@ -28,19 +33,21 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options)
             ShadowFileWriter.Write(setup, set), set.Shapes.Count, 0);
         var diagnostics = new List<Diagnostic>(set.Diagnostics);
         var bspFiles = new List<OutputFile>();
+        var bspEntries = new List<FileEntry>();
         foreach (var gfxId in set.Shapes.Where(s => s.CollisionType == CollisionType.Bsp && s.GfxObjId is not null)
                      .Select(s => s.GfxObjId!.Value).Distinct())
         {
-            var (file, bspDiagnostics) = ExportGfxObj(gfxId);
-            if (file is not null) bspFiles.Add(file);
-            diagnostics.AddRange(bspDiagnostics);
+            var dump = ExportGfxObj(gfxId);
+            if (dump.File is not null) bspFiles.Add(dump.File);
+            bspEntries.AddRange(dump.Entries);
+            diagnostics.AddRange(dump.Diagnostics);
         }
-        return new SetupExport(setup, set, shadow, bspFiles, diagnostics);
+        return new SetupExport(setup, set, shadow, bspFiles, bspEntries, diagnostics);
     }
 
-    /// <summary>A GfxObj's BSP dump (null when it is absent or has no PhysicsBSP), made once and reused.</summary>
-    public (OutputFile? File, IReadOnlyList<Diagnostic> Diagnostics) ExportGfxObj(uint gfxObjId) =>
-        _bsp.GetOrAdd(gfxObjId, id => new Lazy<(OutputFile?, IReadOnlyList<Diagnostic>)>(() => MakeBsp(id))).Value;
+    /// <summary>A GfxObj's BSP dump (no entry when it is absent or has no PhysicsBSP), made once and reused.</summary>
+    public BspDumpResult ExportGfxObj(uint gfxObjId) =>
+        _bsp.GetOrAdd(gfxObjId, id => new Lazy<BspDumpResult>(() => MakeBsp(id))).Value;
 
     public BspDump? ExtractBsp(uint gfxObjId)
     {
@@ -48,11 +55,14 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options)
         return gfx is null ? null : BspExtractor.Extract(gfx);
     }
 
-    private (OutputFile?, IReadOnlyList<Diagnostic>) MakeBsp(uint id)
+    private BspDumpResult MakeBsp(uint id)
     {
         var dump = ExtractBsp(id);
-        if (dump is null) return (null, []);
+        if (dump is null) return new BspDumpResult(null, null, [], []);
         var file = new OutputFile(BspFileFormat.PathFor(id), OutputKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count);
-        return (file, dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray());
+        var diagnostics = dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray();
+        return bspSink is null
+            ? new BspDumpResult(file, file.RelativePath, [FileEntry.Of(file)], diagnostics)
+            : new BspDumpResult(null, file.RelativePath, bspSink(file), diagnostics);
     }
 }

@@ -6,25 +6,26 @@ namespace AcShadow.Core.Export;
 /// <summary>
 /// Turns a run's canonical files into the files the chosen formats ask for: the canonical ones as they are,
 /// and for each BSP dump its acdream GfxObj file. The acdream file is made from the canonical file's own
-/// bytes (read back losslessly), so both formats always say the same thing. Sorted by path.
+/// bytes (read back losslessly), so both formats always say the same thing.
 /// </summary>
 public static class OutputFormatSelection
 {
-    public static IReadOnlyList<OutputFile> Apply(IEnumerable<OutputFile> canonical, OutputFormats formats)
+    /// <summary>All of a run's files at once, sorted by path.</summary>
+    public static IReadOnlyList<OutputFile> Apply(IEnumerable<OutputFile> canonical, OutputFormats formats) =>
+        [.. canonical.SelectMany(f => For(f, formats)).OrderBy(f => f.RelativePath, StringComparer.Ordinal)];
+
+    /// <summary>What one canonical file becomes (a batch streams its files one at a time).</summary>
+    public static IReadOnlyList<OutputFile> For(OutputFile canonical, OutputFormats formats)
     {
-        var files = canonical.ToArray();
-        if (formats == OutputFormats.Canonical) return files;
-        var result = new List<OutputFile>();
-        if (formats.HasFlag(OutputFormats.Canonical)) result.AddRange(files);
-        if (formats.HasFlag(OutputFormats.Acdream))
+        if (formats == OutputFormats.Canonical) return [canonical];
+        var result = new List<OutputFile>(2);
+        if (formats.HasFlag(OutputFormats.Canonical)) result.Add(canonical);
+        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == OutputKind.Bsp)
         {
-            foreach (var bsp in files.Where(f => f.Kind == OutputKind.Bsp))
-            {
-                var dump = BspFileReader.Read(Encoding.UTF8.GetString(bsp.Content));
-                result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(bsp.Id), OutputKind.AcdreamGfxObj, bsp.Id,
-                    AcdreamGfxObjWriter.Write(dump), 0, AcdreamGfxObjWriter.PolygonCount(dump)));
-            }
+            var dump = BspFileReader.Read(Encoding.UTF8.GetString(canonical.Content));
+            result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(canonical.Id), OutputKind.AcdreamGfxObj, canonical.Id,
+                AcdreamGfxObjWriter.Write(dump), 0, AcdreamGfxObjWriter.PolygonCount(dump)));
         }
-        return [.. result.OrderBy(f => f.RelativePath, StringComparer.Ordinal)];
+        return result;
     }
 }

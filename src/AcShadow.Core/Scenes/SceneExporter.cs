@@ -14,18 +14,18 @@ namespace AcShadow.Core.Scenes;
 /// </summary>
 public static class SceneExporter
 {
-    /// <param name="setups">The batch's export of every Setup the scene places that could be exported.</param>
+    /// <param name="setupFiles">The shadow file of every Setup the batch exported (the scene points at it).</param>
     /// <param name="setupProblems">Why a placed Setup has no export (not in the dat, unreadable).</param>
     public static SceneExport Export(LandblockScene scene, ExportEngine engine,
-        IReadOnlyDictionary<uint, SetupExport> setups, IReadOnlyDictionary<uint, string> setupProblems)
+        IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems)
     {
-        var bspFiles = new SortedDictionary<string, OutputFile>(StringComparer.Ordinal);
+        var bspFiles = new SortedDictionary<string, BspDumpResult>(StringComparer.Ordinal);
         var skipped = new Dictionary<uint, SkippedItem>();
         var objects = new JsonArr();
         int resolved = 0, unresolved = 0;
         foreach (var placed in scene.Objects)
         {
-            var entry = Describe(placed, scene, engine, setups, setupProblems, bspFiles, skipped);
+            var entry = Describe(placed, scene, engine, setupFiles, setupProblems, bspFiles, skipped);
             if (entry.Resolved) resolved++; else unresolved++;
             objects.Add(entry.Json);
         }
@@ -47,12 +47,13 @@ public static class SceneExporter
             .Add("objects", objects);
         var file = new OutputFile(SceneFileFormat.Path, OutputKind.Scene, scene.LandBlockInfoId,
             CanonicalJsonWriter.WriteUtf8(json), 0, 0);
-        return new SceneExport(file, bspFiles.Values.ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
+        return new SceneExport(file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
+            bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
     }
 
     private static (JsonObj Json, bool Resolved) Describe(SceneObject placed, LandblockScene scene, ExportEngine engine,
-        IReadOnlyDictionary<uint, SetupExport> setups, IReadOnlyDictionary<uint, string> setupProblems,
-        SortedDictionary<string, OutputFile> bspFiles, Dictionary<uint, SkippedItem> skipped)
+        IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems,
+        SortedDictionary<string, BspDumpResult> bspFiles, Dictionary<uint, SkippedItem> skipped)
     {
         var (wx, wy, wz) = WorldFrame.Origin(scene.Coordinates, placed.Frame);
         var json = new JsonObj()
@@ -68,8 +69,8 @@ public static class SceneExporter
         JsonNode? shapes = null;
         switch (placed.Kind)
         {
-            case SceneObjectKind.Setup when setups.TryGetValue(placed.Id, out var export):
-                file = export.Shadow.RelativePath;
+            case SceneObjectKind.Setup when setupFiles.TryGetValue(placed.Id, out var shadowPath):
+                file = shadowPath;
                 break;
             case SceneObjectKind.Setup:
                 diagnostics.Add(new("unresolved", $"Setup {JsonIds.Format(placed.Id)}: {setupProblems.GetValueOrDefault(placed.Id, SkippedItem.NotInDat)}"));
@@ -95,7 +96,7 @@ public static class SceneExporter
 
     /// <summary>A drawing-only GfxObj is resolved (it has no shapes and no dump: nothing of it collides).</summary>
     private static (string? File, JsonNode? Shapes) DescribeGfxObj(uint id, ExportEngine engine,
-        SortedDictionary<string, OutputFile> bspFiles, Dictionary<uint, SkippedItem> skipped, List<Diagnostic> diagnostics)
+        SortedDictionary<string, BspDumpResult> bspFiles, Dictionary<uint, SkippedItem> skipped, List<Diagnostic> diagnostics)
     {
         GfxObj? gfx;
         try
@@ -117,10 +118,10 @@ public static class SceneExporter
         }
         var set = BareGfxObjShape.Build(gfx, engine.Dat.ReadGfxObj, engine.Options);
         diagnostics.AddRange(set.Diagnostics);
-        var (dump, dumpDiagnostics) = engine.ExportGfxObj(id);
-        diagnostics.AddRange(dumpDiagnostics);
-        if (dump is not null) bspFiles[dump.RelativePath] = dump;
-        return (dump is null ? null : dump.RelativePath, BareGfxObjShape.ShapesJson(gfx, set));
+        var dump = engine.ExportGfxObj(id);
+        diagnostics.AddRange(dump.Diagnostics);
+        if (dump.Path is not null) bspFiles[dump.Path] = dump;
+        return (dump.Path, BareGfxObjShape.ShapesJson(gfx, set));
     }
 
     private static JsonObj FrameJson(JsonArr origin, Frame frame) =>

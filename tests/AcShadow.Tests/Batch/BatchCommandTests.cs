@@ -111,10 +111,11 @@ public class BatchCommandTests
     [Fact]
     public void Incremental_leaves_unchanged_files_alone()
     {
-        var (first, dir) = RunBatch("--doors");
+        var (first, dir) = RunBatch("--doors", "--incremental");
         using (dir)
         {
             Assert.Equal(0, first.ExitCode);
+            Assert.Contains("incremental.json", dir.Files());
             var shadow = Path.Combine(dir.Path, "setups/0x020019FF.shadow.json");
             var stamp = new DateTime(2001, 1, 1, 0, 0, 0, DateTimeKind.Utc);
             File.SetLastWriteTimeUtc(shadow, stamp);

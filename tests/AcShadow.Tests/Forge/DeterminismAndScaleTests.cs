@@ -37,7 +37,7 @@ public sealed class DeterminismAndScaleTests(SmallScaleFixture fixture) : IClass
             var gfx = portal.ReadGfxObj(id)!;
             if (!gfx.HasPhysics) continue;
             Assert.Equal([], BspInvariants.Check(gfx).Select(p => $"0x{id:X8}: {p}"));
-            Assert.InRange(gfx.PhysicsPolygons.Count, 6, 300);
+            Assert.InRange(gfx.PhysicsPolygons.Count, ScaleSpecGenerator.MinPhysicsPolygons, ScaleSpecGenerator.MaxPhysicsPolygons);
             checkedCount++;
         }
         Assert.True(checkedCount > 100, $"{checkedCount} physics GfxObjs");

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Runs the benchmark harness (tools/AcShadow.Bench, `harness`): forges the scale dat and its quarter-size
+# twin (cached in .bench-cache/ by their parameters), measures the floor, the naive exporter, batch at one
+# job and at all cores, --incremental, dump against --version and the collision reference, writes
+# bench.json and prints the table. Extra arguments go to the harness: --small (CI size), --setups N,
+# --gfxobjs M, --seed S, --reps R, --out FILE.
+#
+#   scripts/bench.sh                # the full run (about 10-15 minutes on 2 cores, the first time)
+#   scripts/bench.sh --small        # a quick check that everything runs
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+cli_dir="$root/artifacts/bench/cli"
+rm -rf "$cli_dir"
+
+# The CLI as a user would ship it: Release, ReadyToRun when the runtime's crossgen package is available.
+rid=$(dotnet --info | awk '/^ *RID:/ {print $2; exit}')
+if [ -n "$rid" ] && dotnet publish src/AcShadow.Cli -c Release -r "$rid" --self-contained false -p:PublishReadyToRun=true -o "$cli_dir" -v quiet -nologo; then
+    echo "bench: measuring the ReadyToRun publish of acshadow ($rid)"
+else
+    echo "bench: ReadyToRun publish unavailable; measuring the plain Release build"
+    dotnet publish src/AcShadow.Cli -c Release -o "$cli_dir" -v quiet -nologo
+fi
+dotnet build tools/AcShadow.Bench -c Release -v quiet -nologo
+
+exec dotnet tools/AcShadow.Bench/bin/Release/net10.0/AcShadow.Bench.dll harness \
+    --cli "$cli_dir/acshadow" --cache "$root/.bench-cache" --out "$root/bench.json" "$@"

@@ -1,0 +1,55 @@
+using System.Buffers.Binary;
+using System.Security.Cryptography;
+using System.Text;
+using System.Collections.Concurrent;
+using AcShadow.Core.Export;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>
+/// The incremental fast path. A Setup's fingerprint hashes the tool key and the raw dat bytes of the
+/// Setup and of every GfxObj it names as a part (read, never decoded): its shadow file and its BSP dumps
+/// are a function of exactly those objects. Directory entries alone (offset, size, iteration) would miss
+/// a dat rewritten in place with the same layout. When the previous run recorded the same fingerprint
+/// (computed over the parts it recorded: unchanged Setup bytes mean unchanged parts) and its files are
+/// still on disk with their recorded sizes, the Setup is not decoded at all.
+/// </summary>
+/// <param name="previous">The last run's state, or null (a full run that still records fingerprints).</param>
+/// <param name="objectBytes">An object's raw bytes in the current dat, or null when absent.</param>
+/// <param name="isOnDisk">Whether a file of the previous run is still there as recorded.</param>
+public sealed class BatchReuse(IncrementalState? previous, string toolKey, Func<uint, byte[]?> objectBytes, Func<FileEntry, bool> isOnDisk)
+{
+    private readonly Dictionary<uint, IncrementalSetup> _previous =
+        previous is not null && previous.Tool == toolKey ? previous.Setups.ToDictionary(s => s.Id) : [];
+    /// <summary>Each object's digest, computed once however many Setups share it (32 bytes an object).</summary>
+    private readonly ConcurrentDictionary<uint, byte[]> _digests = new();
+
+    public string Fingerprint(uint setupId, IReadOnlyList<uint> parts)
+    {
+        var key = Encoding.UTF8.GetBytes(toolKey);
+        var buffer = new byte[key.Length + (parts.Count + 1) * (4 + SHA256.HashSizeInBytes)];
+        key.CopyTo(buffer, 0);
+        var length = key.Length;
+        void Add(uint id)
+        {
+            BinaryPrimitives.WriteUInt32LittleEndian(buffer.AsSpan(length), id);
+            Digest(id).CopyTo(buffer, length + 4);
+            length += 4 + SHA256.HashSizeInBytes;
+        }
+        Add(setupId);
+        foreach (var part in parts) Add(part);
+        return Convert.ToHexStringLower(SHA256.HashData(buffer.AsSpan(0, length))[..16]);
+    }
+
+    private byte[] Digest(uint id) => _digests.GetOrAdd(id, key => objectBytes(key) is { } bytes ? SHA256.HashData(bytes) : new byte[SHA256.HashSizeInBytes]);
+
+    /// <summary>The previous outcome when nothing it depends on changed and its files are intact; else null.</summary>
+    public SetupOutcome? TryReuse(uint setupId)
+    {
+        if (!_previous.TryGetValue(setupId, out var record)) return null;
+        if (Fingerprint(setupId, record.Parts) != record.Fingerprint) return null;
+        foreach (var file in record.Files)
+            if (!isOnDisk(file)) return null;
+        return new SetupOutcome(null, record.Files, record, true);
+    }
+}

@@ -1,0 +1,25 @@
+using AcShadow.Core.Export;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>
+/// What a batch leaves for the next `--incremental` run (the folder's incremental.json): the tool and
+/// options it ran with (policy, scale, formats), and per exported Setup the fingerprint of its inputs, its parts, its diagnostic
+/// count and its files' entries.
+/// </summary>
+public sealed record IncrementalState(string Tool, IReadOnlyList<IncrementalSetup> Setups)
+{
+    public const string Path = "incremental.json";
+    public const string Format = "acshadow.incremental/1";
+
+    /// <summary>
+    /// The build of the code that makes the files (the Core assembly's module id changes with any change
+    /// to it) and the options the files depend on: a different tool or option reuses nothing.
+    /// </summary>
+    public static string ToolKey(ShapeBuildOptions options, OutputFormats formats) =>
+        $"{typeof(ExportEngine).Assembly.ManifestModule.ModuleVersionId:N}/{options.Policy.Name()}/{options.EntityScale.ToString("R", System.Globalization.CultureInfo.InvariantCulture)}/{formats.Name()}";
+}
+
+/// <summary>One Setup's record in <see cref="IncrementalState"/>: every file written for it (its shadow file, its BSP dumps, in the chosen formats).</summary>
+public sealed record IncrementalSetup(uint Id, string Fingerprint, IReadOnlyList<uint> Parts, int Diagnostics, IReadOnlyList<FileEntry> Files);

@@ -1,0 +1,65 @@
+using System.Text.Json;
+using AcShadow.Core.Export;
+using AcShadow.Core.Json;
+
+namespace AcShadow.Core.Batch;
+
+/// <summary>
+/// incremental.json (docs/batch.md): <see cref="IncrementalState"/> as canonical JSON. Reading is
+/// forgiving by design: anything unreadable gives null, and the run that asked
+/// for it simply exports everything.
+/// </summary>
+public static class IncrementalStateFile
+{
+    public static byte[] Write(IncrementalState state) => CanonicalJsonWriter.WriteUtf8(new JsonObj()
+        .Add("format", IncrementalState.Format)
+        .Add("tool", state.Tool)
+        .Add("setups", JsonArr.Of(state.Setups.OrderBy(s => s.Id), s => new JsonObj()
+            .Add("id", JsonIds.Format(s.Id))
+            .Add("fingerprint", s.Fingerprint)
+            .Add("parts", JsonArr.Of(s.Parts.Select(JsonIds.Format)))
+            .Add("diagnostics", s.Diagnostics)
+            .Add("files", JsonArr.Of(s.Files, f => new JsonObj()
+                .Add("path", f.RelativePath)
+                .Add("kind", BatchIndexFormat.KindName(f.Kind))
+                .Add("id", JsonIds.Format(f.Id))
+                .Add("shapes", f.ShapeCount)
+                .Add("polygons", f.PolygonCount)
+                .Add("bytes", f.Bytes)
+                .Add("sha256", f.Sha256))))));
+
+    public static IncrementalState? TryRead(byte[] utf8)
+    {
+        try
+        {
+            using var doc = JsonDocument.Parse(utf8);
+            var root = doc.RootElement;
+            if (root.GetProperty("format").GetString() != IncrementalState.Format) return null;
+            var setups = root.GetProperty("setups").EnumerateArray().Select(s => new IncrementalSetup(
+                Id(s.GetProperty("id")),
+                s.GetProperty("fingerprint").GetString()!,
+                s.GetProperty("parts").EnumerateArray().Select(Id).ToArray(),
+                s.GetProperty("diagnostics").GetInt32(),
+                s.GetProperty("files").EnumerateArray().Select(f => new FileEntry(
+                    f.GetProperty("path").GetString()!,
+                    Kind(f.GetProperty("kind").GetString()),
+                    Id(f.GetProperty("id")),
+                    f.GetProperty("shapes").GetInt32(),
+                    f.GetProperty("polygons").GetInt32(),
+                    f.GetProperty("bytes").GetInt64(),
+                    f.GetProperty("sha256").GetString()!)).ToArray())).ToArray();
+            return new IncrementalState(root.GetProperty("tool").GetString()!, setups);
+        }
+        catch (Exception e) when (e is JsonException or InvalidOperationException or KeyNotFoundException or FormatException)
+        {
+            return null;
+        }
+    }
+
+    private static uint Id(JsonElement e) =>
+        JsonIds.TryParse(e.GetString(), out var id) ? id : throw new FormatException($"not an id: {e}");
+
+    private static OutputKind Kind(string? name) =>
+        Enum.GetValues<OutputKind>().Where(k => BatchIndexFormat.KindName(k) == name).Select(k => (OutputKind?)k).FirstOrDefault()
+        ?? throw new FormatException($"not a file kind: {name}");
+}

@@ -1,0 +1,61 @@
+using System.Text.Json;
+using AcShadow.Bench.Harness;
+using AcShadow.Forge;
+using AcShadow.Tests.Support;
+
+namespace AcShadow.Tests.Bench;
+
+/// <summary>
+/// The benchmark harness at a tiny scale, against the CLI this test run built: it runs end to end and
+/// bench.json carries every figure, ratio and check. Its timings are not asserted (speed is measured by
+/// scripts/bench.sh, never by a test).
+/// </summary>
+public sealed class HarnessTests
+{
+    private static readonly string[] Measured = ["floor", "naive", "batch", "batch --incremental"];
+
+    [Fact]
+    public void A_tiny_harness_run_writes_every_figure_to_bench_json()
+    {
+        using var dir = new TempDir();
+        const int setups = 60; // at least the 58 door ids, so the door dump has its Setup
+        var options = new HarnessOptions(setups, ScaleSpecGenerator.GfxObjsFor(setups), 3, 1, 1,
+            Path.Combine(AppContext.BaseDirectory, "acshadow.dll"), Path.Combine(dir.Path, "cache"), Path.Combine(dir.Path, "work"),
+            Path.Combine(dir.Path, "bench.json"), true);
+        var log = new StringWriter();
+
+        var report = BenchHarness.Run(options, log);
+
+        Assert.All(report.Checks, c => Assert.True(c.Passed, $"{c.Name}: {string.Join("; ", c.Problems)}"));
+        using var json = JsonDocument.Parse(File.ReadAllBytes(options.Output));
+        var root = json.RootElement;
+        Assert.Equal(BenchReport.Format, root.GetProperty("format").GetString());
+        Assert.True(root.GetProperty("machine").GetProperty("cores").GetInt32() >= 1);
+        foreach (var size in new[] { "full", "quarter" })
+            Assert.True(root.GetProperty("dats").GetProperty(size).GetProperty("portalBytes").GetInt64() > 0);
+
+        var timings = root.GetProperty("timings").EnumerateArray().ToArray();
+        foreach (var name in Measured)
+            foreach (var size in new[] { "full", "quarter" })
+                Assert.Contains(timings, t => t.GetProperty("name").GetString() == name && t.GetProperty("size").GetString() == size);
+        Assert.Contains(timings, t => t.GetProperty("name").GetString() == "dump --setup");
+        Assert.Contains(timings, t => t.GetProperty("name").GetString() == "acshadow --version");
+        Assert.All(timings, t =>
+        {
+            Assert.True(t.GetProperty("medianSeconds").GetDouble() > 0, t.ToString());
+            Assert.True(t.GetProperty("peakMiB").GetDouble() > 0, t.ToString());
+        });
+
+        var collision = root.GetProperty("collision");
+        Assert.True(collision.GetProperty("queries").GetInt32() > 0);
+        Assert.Equal(0, collision.GetProperty("disagreements").GetInt32());
+        Assert.True(collision.GetProperty("minPolygons").GetInt32() >= CollisionComparison.MinPolygons);
+
+        var ratios = root.GetProperty("ratios").EnumerateArray().ToArray();
+        Assert.Equal(report.Ratios.Select(r => r.Name), ratios.Select(r => r.GetProperty("name").GetString()));
+        Assert.Equal(11, ratios.Length);
+        Assert.All(ratios, r => Assert.True(r.GetProperty("value").GetDouble() > 0, r.ToString()));
+        Assert.Contains("| Target | Measured | Goal | Met |", log.ToString());
+        Assert.False(Directory.Exists(options.WorkDirectory), "the harness leaves no output folders behind");
+    }
+}

@@ -1,0 +1,120 @@
+using System.Globalization;
+
+namespace AcShadow.Bench.Harness;
+
+/// <summary>
+/// One harness run: forge (or reuse) the scale dat and its quarter-size twin, then measure side by side,
+/// each warmed once and repeated: the floor, the naive exporter, `batch --all` at one job and at all
+/// cores, `--incremental` with nothing to do, `dump` against `--version`, and the collision reference
+/// against brute force; check the outputs are byte-identical; write bench.json and print the table.
+/// </summary>
+public static class BenchHarness
+{
+    public const string DoorSetup = "0x020019FF";
+
+    public static BenchReport Run(HarnessOptions options, TextWriter log)
+    {
+        var started = DateTime.UtcNow;
+        var machine = MachineInfo.Current();
+        var cores = Environment.ProcessorCount;
+        Directory.CreateDirectory(options.WorkDirectory);
+        var full = ScaleDatCache.Get(options.CacheDirectory, options.Setups, options.GfxObjs, options.Seed, log);
+        var quarter = ScaleDatCache.Get(options.CacheDirectory, Math.Max(1, options.Setups / 4),
+            Math.Max(AcShadow.Forge.ScaleSpecGenerator.MinGfxObjs(Math.Max(1, options.Setups / 4)), options.GfxObjs / 4), options.Seed, log);
+
+        var timings = new List<Timing>();
+        var checks = new List<Check>();
+        try
+        {
+            foreach (var (size, dat) in new[] { ("quarter", quarter), ("full", full) })
+            {
+                var jobCounts = cores > 1 ? new[] { 1, cores } : [1];
+                foreach (var jobs in jobCounts)
+                    timings.Add(Measure(log, options, "floor", size, jobs, "read and decode every Setup and the GfxObjs its parts name, discard (bench process)",
+                        _ => ProcessRunner.Run(BenchExecutable, ["floor", "--dat", dat.Directory, "--jobs", Text(jobs)])));
+                var naiveOut = Path.Combine(options.WorkDirectory, $"naive-{size}");
+                timings.Add(Measure(log, options, "naive", size, 1, "System.Text.Json reflection defaults, one file per Setup and per BSP GfxObj (bench process)",
+                    _ => { Reset(naiveOut); return ProcessRunner.Run(BenchExecutable, ["naive", "--dat", dat.Directory, "--out", naiveOut]); }));
+                Reset(naiveOut);
+
+                var outputs = new Dictionary<int, string>();
+                foreach (var jobs in jobCounts)
+                {
+                    var outDir = Path.Combine(options.WorkDirectory, $"batch-{size}-j{jobs}");
+                    outputs[jobs] = outDir;
+                    timings.Add(Measure(log, options, "batch", size, jobs, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder",
+                        _ => { Reset(outDir); return ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", outDir, "--jobs", Text(jobs), "--quiet"]); }));
+                }
+                if (cores > 1)
+                    checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({size})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
+
+                var incrementalOut = Path.Combine(options.WorkDirectory, $"incremental-{size}");
+                Reset(incrementalOut);
+                ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"]);
+                timings.Add(Measure(log, options, "batch --incremental", size, cores, "acshadow batch --all --incremental --quiet, nothing changed since the last run",
+                    _ => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"])));
+                checks.Add(new Check($"--incremental output identical to a full run ({size})", OutputComparison.Differences(incrementalOut, outputs[cores], ["incremental.json"])));
+                Reset(incrementalOut);
+                foreach (var dir in outputs.Values) Reset(dir);
+            }
+
+            var dumpOut = Path.Combine(options.WorkDirectory, "dump");
+            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "whole process",
+                _ => ProcessRunner.Run(options.Cli, ["--version"])));
+            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup", "full", 1, $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process",
+                _ => ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
+            Reset(dumpOut);
+        }
+        finally
+        {
+            try { Directory.Delete(options.WorkDirectory, true); } catch (IOException) { }
+        }
+
+        log.WriteLine("collision: reference vs brute force on GfxObjs of 200+ polygons (full dat, in-process)");
+        CollisionResult collision;
+        using (var dat = Workloads.Open(full.Directory)) collision = CollisionComparison.Run(dat, options.Repetitions);
+        checks.Add(new Check("collision reference and brute force give the same answers",
+            collision.Disagreements == 0 ? [] : [$"{collision.Disagreements} of {collision.Queries} queries disagree"]));
+
+        var report = BenchReport.Build(options, machine, started, DateTime.UtcNow, full, quarter, timings, collision, checks);
+        report.Write(options.Output);
+        report.PrintTable(log);
+        log.WriteLine($"wrote {options.Output}");
+        return report;
+    }
+
+    private static Timing Measure(TextWriter log, HarnessOptions options, string name, string size, int jobs, string how, Func<int, ProcessRunner.Outcome> run)
+    {
+        log.Write($"{name} ({size}, {jobs} job(s)): warm-up");
+        run(-1);
+        var seconds = new List<double>();
+        var peaks = new List<double>();
+        var cpu = new List<double>();
+        for (var i = 0; i < options.Repetitions; i++)
+        {
+            var outcome = run(i);
+            seconds.Add(outcome.Seconds);
+            peaks.Add(outcome.PeakMiB);
+            if (double.IsFinite(outcome.CpuSeconds)) cpu.Add(outcome.CpuSeconds);
+            log.Write(string.Create(CultureInfo.InvariantCulture, $" {outcome.Seconds:0.000}s"));
+        }
+        log.WriteLine();
+        return new Timing(name, size, jobs, seconds, peaks, cpu, how);
+    }
+
+    /// <summary>The bench's own entry assembly, run again as a child process for the floor and naive workloads.</summary>
+    private static string BenchExecutable => typeof(BenchHarness).Assembly.Location;
+
+    private static void Reset(string dir)
+    {
+        if (Directory.Exists(dir)) Directory.Delete(dir, true);
+    }
+
+    private static string Text(int n) => n.ToString(CultureInfo.InvariantCulture);
+}
+
+/// <summary>A correctness check the harness makes on the way (empty problems: it held).</summary>
+public sealed record Check(string Name, IReadOnlyList<string> Problems)
+{
+    public bool Passed => Problems.Count == 0;
+}

@@ -1,0 +1,56 @@
+using System.Globalization;
+using AcShadow.Forge;
+
+namespace AcShadow.Bench.Harness;
+
+/// <summary>
+/// What one harness run measures: the scale dat's parameters (its quarter-size twin is derived), how many
+/// timed repetitions after one warm-up, where the CLI and the caches are, and where bench.json goes.
+/// </summary>
+public sealed record HarnessOptions(
+    int Setups,
+    int GfxObjs,
+    int Seed,
+    int Repetitions,
+    int StartupRepetitions,
+    string Cli,
+    string CacheDirectory,
+    string WorkDirectory,
+    string Output,
+    bool Small)
+{
+    public const string Usage =
+        "usage: AcShadow.Bench harness --cli PATH [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--out bench.json]";
+
+    /// <summary>CI size: a few hundred Setups, one repetition; proves the harness works, not the timings.</summary>
+    public const int SmallSetups = 200;
+
+    public static HarnessOptions Parse(IReadOnlyList<string> args)
+    {
+        var small = args.Contains("--small");
+        string? Value(string name)
+        {
+            var i = args.ToList().IndexOf(name);
+            if (i < 0) return null;
+            return i + 1 < args.Count ? args[i + 1] : throw new ArgumentException($"{name} needs a value; {Usage}");
+        }
+        int Int(string name, int fallback) => Value(name) is { } text
+            ? int.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out var v) && v > 0 ? v : throw new ArgumentException($"{name} {text}: give a positive integer")
+            : fallback;
+
+        var setups = Int("--setups", small ? SmallSetups : ScaleSpecGenerator.DefaultSetups);
+        var cli = Value("--cli") ?? throw new ArgumentException($"--cli is required: the acshadow executable (or acshadow.dll) to measure; {Usage}");
+        var cache = Value("--cache") ?? Path.Combine(Path.GetTempPath(), "acshadow-bench-cache");
+        return new HarnessOptions(
+            setups,
+            Int("--gfxobjs", ScaleSpecGenerator.GfxObjsFor(setups)),
+            Int("--seed", ScaleSpecGenerator.DefaultSeed),
+            Int("--reps", small ? 1 : 3),
+            Int("--startup-reps", small ? 2 : 10),
+            Path.GetFullPath(cli),
+            Path.GetFullPath(cache),
+            Path.GetFullPath(Value("--work") ?? Path.Combine(Path.GetTempPath(), $"acshadow-bench-{Environment.ProcessId}")),
+            Path.GetFullPath(Value("--out") ?? "bench.json"),
+            small);
+    }
+}

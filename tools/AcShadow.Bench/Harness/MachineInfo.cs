@@ -1,0 +1,37 @@
+using System.Runtime.InteropServices;
+
+namespace AcShadow.Bench.Harness;
+
+/// <summary>The machine a run was measured on, as README's Performance section reports it.</summary>
+public sealed record MachineInfo(int Cores, string Cpu, double RamGiB, string Os, string Dotnet, double LoadAverage)
+{
+    public static MachineInfo Current() => new(
+        Environment.ProcessorCount,
+        ProcLine("/proc/cpuinfo", "model name") ?? RuntimeInformation.ProcessArchitecture.ToString(),
+        (ProcLine("/proc/meminfo", "MemTotal") is { } kb ? double.Parse(kb.Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture) : 0) / 1048576.0,
+        RuntimeInformation.OSDescription,
+        RuntimeInformation.FrameworkDescription,
+        CurrentLoadAverage());
+
+    /// <summary>The 1-minute load average: a busy machine makes every figure noisier.</summary>
+    public static double CurrentLoadAverage()
+    {
+        try
+        {
+            return double.Parse(File.ReadAllText("/proc/loadavg").Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
+        }
+        catch (IOException) { return double.NaN; }
+        catch (UnauthorizedAccessException) { return double.NaN; }
+    }
+
+    private static string? ProcLine(string file, string key)
+    {
+        try
+        {
+            return File.ReadLines(file).Where(l => l.StartsWith(key, StringComparison.Ordinal))
+                .Select(l => l[(l.IndexOf(':') + 1)..].Trim()).FirstOrDefault();
+        }
+        catch (IOException) { return null; }
+        catch (UnauthorizedAccessException) { return null; }
+    }
+}
