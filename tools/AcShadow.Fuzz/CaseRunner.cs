@@ -25,12 +25,12 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
         var cell = Path.Combine(folder, "client_cell_1.dat");
         File.WriteAllBytes(portal, input.Portal);
         File.WriteAllBytes(cell, input.Cell);
-        var policy = (input.DumpSetup & 1) == 0 ? "retail" : "union";
         string[][] commands =
         [
-            ["dump", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "dump"), "--policy", policy, "--verbose"],
+            ["dump", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "dump"),
+                "--policy", input.Policy, "--format", input.Format, "--verbose"],
             ["batch", "--all", "--landblock", $"0x{input.Landblock:X4}", "--dat", portal, "--cell-dat", cell,
-                "--out", Path.Combine(folder, "batch"), "--jobs", "1", "--quiet", "--policy", policy, "--verbose"],
+                "--out", Path.Combine(folder, "batch"), "--jobs", "1", "--quiet", "--policy", input.Policy, "--format", input.Format, "--verbose"],
         ];
 
         var clock = Stopwatch.StartNew();
@@ -95,9 +95,10 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
         if (!Documented.Contains(code))
             return new CaseFailure($"{command}: exit {code}", stderr);
         // A damaged object, wherever it is met, is named: "corrupt dat" and the id being read.
-        // (Refusing the whole file at open, header or directory, names the file instead.)
-        if (code == 3 && !message.Contains("not a readable dat", StringComparison.Ordinal) && !message.Contains(" dat, not a ", StringComparison.Ordinal)
-            && !NamesCorruptObject(message))
+        // (Refusing the whole file at open, for its header or directory, names the option and the file instead.)
+        var refusedAtOpen = message.StartsWith("acshadow: --dat: ", StringComparison.Ordinal)
+            || message.StartsWith("acshadow: --cell-dat: ", StringComparison.Ordinal);
+        if (code == 3 && !refusedAtOpen && !NamesCorruptObject(message))
             return new CaseFailure($"{command}: exit 3 without \"corrupt dat\" and an id", stderr);
         // Objects a batch skips, or parts it leaves out, because they cannot be decoded: named the same way.
         if (lines.FirstOrDefault(l => (l.Contains("unreadable:", StringComparison.Ordinal) || l.Contains("cannot be read:", StringComparison.Ordinal))

@@ -13,6 +13,9 @@ public sealed class DatMutator(IReadOnlyList<FuzzBase> bases)
 {
     public DatMutator(FuzzBase source) : this([source]) { }
 
+    private static readonly string[] Policies = ["retail", "union"];
+    private static readonly string[] Formats = ["canonical", "canonical", "acdream", "both"];
+
     private static readonly float[] FloatLimits =
         [float.NaN, float.PositiveInfinity, float.NegativeInfinity, float.MaxValue, float.MinValue, float.Epsilon, -0f, 1e30f, -1e30f, 1e-30f];
 
@@ -56,7 +59,12 @@ public sealed class DatMutator(IReadOnlyList<FuzzBase> bases)
                 notes.Add($"{(inPortal ? "portal" : "cell")}: {Apply(kind, bytes, layout, random)}");
             }
         }
-        return new FuzzInput(portal, cell, dumpSetup, source.Landblock, $"case {caseIndex} (seed {seed}, {source.Name}): {string.Join("; ", notes)}") { From = source };
+        return new FuzzInput(portal, cell, dumpSetup, source.Landblock, $"case {caseIndex} (seed {seed}, {source.Name}): {string.Join("; ", notes)}")
+        {
+            From = source,
+            Policy = Policies[random.Next(Policies.Length)],
+            Format = Formats[random.Next(Formats.Length)],
+        };
     }
 
     /// <summary>A well-mixed 32-bit seed per case, the same on every machine (SplitMix64 finaliser).</summary>

@@ -8,4 +8,10 @@ namespace AcShadow.Fuzz;
 public sealed record FuzzInput(byte[] Portal, byte[] Cell, uint DumpSetup, uint Landblock, string Description)
 {
     public FuzzBase? From { get; init; }
+
+    /// <summary>`--policy` for both commands: retail or union.</summary>
+    public string Policy { get; init; } = "retail";
+
+    /// <summary>`--format` for both commands: canonical, acdream or both.</summary>
+    public string Format { get; init; } = "canonical";
 }

@@ -4,8 +4,8 @@ namespace AcShadow.Fuzz;
 
 /// <summary>
 /// Saved reproducers: one folder per failure holding client_portal.dat, client_cell_1.dat and case.txt
-/// (the Setup dump is asked for, the landblock batch exports, the signature and the mutation), read
-/// back by the regression tests.
+/// (the Setup dump is asked for, the landblock batch exports, the policy and format, the signature and the
+/// mutation), read back by the regression tests.
 /// </summary>
 public static class ReproducerStore
 {
@@ -20,7 +20,7 @@ public static class ReproducerStore
         File.WriteAllBytes(Path.Combine(folder, PortalFile), input.Portal);
         File.WriteAllBytes(Path.Combine(folder, CellFile), input.Cell);
         File.WriteAllText(Path.Combine(folder, CaseFile),
-            $"dump-setup: 0x{input.DumpSetup:X8}\nlandblock: 0x{input.Landblock:X4}\nsignature: {OneLine(failure.Signature)}\nmutation: {OneLine(input.Description)}\n");
+            $"dump-setup: 0x{input.DumpSetup:X8}\nlandblock: 0x{input.Landblock:X4}\npolicy: {input.Policy}\nformat: {input.Format}\nsignature: {OneLine(failure.Signature)}\nmutation: {OneLine(input.Description)}\n");
         return folder;
     }
 
@@ -35,7 +35,11 @@ public static class ReproducerStore
             File.ReadAllBytes(Path.Combine(folder, CellFile)),
             ParseHex(fields["dump-setup"]),
             ParseHex(fields["landblock"]),
-            fields.GetValueOrDefault("mutation", Path.GetFileName(folder)));
+            fields.GetValueOrDefault("mutation", Path.GetFileName(folder)))
+        {
+            Policy = fields.GetValueOrDefault("policy", "retail"),
+            Format = fields.GetValueOrDefault("format", "canonical"),
+        };
     }
 
     private static uint ParseHex(string text) => uint.Parse(text.AsSpan(2), NumberStyles.HexNumber, CultureInfo.InvariantCulture);

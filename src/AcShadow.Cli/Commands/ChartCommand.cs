@@ -6,6 +6,7 @@ using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Output;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 
 namespace AcShadow.Cli.Commands;
@@ -71,8 +72,25 @@ public static class ChartCommand
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
 
         var subjects = new ChartSubjects(dat.Portal);
-        var chosen = order.Select(id => subjects.For(id, scale)!)
-            .Concat(bareGfxObjs.Select(id => subjects.ForBareGfxObj(id, scale)).OfType<ChartSubject>())
+        // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
+        // for by --setup has been read above, so it is decodable.
+        var unreadable = new List<uint>();
+        ChartSubject? Decodable(uint id, Func<ChartSubject?> subject)
+        {
+            try
+            {
+                return subject();
+            }
+            catch (DatFormatException e)
+            {
+                console.Error.WriteLine($"warning: {JsonIds.Format(id)}: unreadable, skipped: {e.Message}");
+                unreadable.Add(id);
+                return null;
+            }
+        }
+        var chosen = order.Select(id => Decodable(id, () => subjects.For(id, scale)))
+            .Concat(bareGfxObjs.Select(id => Decodable(id, () => subjects.ForBareGfxObj(id, scale))))
+            .OfType<ChartSubject>()
             .ToArray();
         var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || chosen.Length < 2, "objects charted");
         ChartReport report;
@@ -92,9 +110,10 @@ public static class ChartCommand
         OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
         foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
 
+        var chartedSetups = order.Length - unreadable.Count(order.Contains);
         var w = console.Out;
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"chart: {report.Objects.Count} object(s) ({order.Length} Setup(s), {report.Objects.Count - order.Length} bare GfxObj(s)) from {dat.Description}, {report.Objects.Sum(o => o.Probes.Count)} probes (radius {options.ProbeRadius} m, spacing {options.Spacing} m), reference {report.Reference}"));
+            $"chart: {report.Objects.Count} object(s) ({chartedSetups} Setup(s), {report.Objects.Count - chartedSetups} bare GfxObj(s)) from {dat.Description}, {report.Objects.Sum(o => o.Probes.Count)} probes (radius {options.ProbeRadius} m, spacing {options.Spacing} m), reference {report.Reference}"));
         foreach (var s in ModelSummary.All(report))
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {s.FalsePass,7} false pass  {s.FalseBlock,7} false block  {s.Timing.MedianNs,8:0.0} ns/query median"));
@@ -103,6 +122,8 @@ public static class ChartCommand
         if (report.Objects.Count > 20) w.WriteLine($"  ... cheapest exact model of every setup in {Path.Combine(outDir, "chart.csv")}");
         foreach (var group in planned?.Skipped.GroupBy(s => s.Reason) ?? [])
             w.WriteLine($"  skipped {group.Count()} ({group.Key}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
+        if (unreadable.Count > 0)
+            w.WriteLine($"  skipped {unreadable.Count} (unreadable, see the warnings): {string.Join(' ', unreadable.Select(JsonIds.Format))}");
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wrote {files.Count} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
         return ExitCodes.Ok;

@@ -85,17 +85,18 @@ public static class DatLocator
         {
             var kind = dat.Info.Kind;
             dat.Dispose();
-            throw new CliException(ExitCodes.DatUnreadable,
-                $"{source}: {file} is {KindName(kind)}, not {KindName(expectedKind)}: pass {expectedName} there");
+            throw new CliException(ExitCodes.DatUnreadable, KindName(kind) is { } name
+                ? $"{source}: {file} is {name} dat, not {KindName(expectedKind)} dat (its header says so): pass {expectedName} there"
+                : $"{source}: {file} is not a readable dat: its header names data set {(uint)kind}, which is no dat acshadow knows (1 portal, 2 cell, 3 language)");
         }
         return dat;
     }
 
-    private static string KindName(DatFileKind kind) => kind switch
+    private static string? KindName(DatFileKind kind) => kind switch
     {
-        DatFileKind.Portal => "a portal dat (client_portal.dat)",
-        DatFileKind.Cell => "a cell dat (client_cell_1.dat)",
-        DatFileKind.Local => "a language dat (client_local_English.dat)",
-        _ => $"a dat of data set {(uint)kind}",
+        DatFileKind.Portal => "a portal",
+        DatFileKind.Cell => "a cell",
+        DatFileKind.Local => "a language (client_local_English)",
+        _ => null,
     };
 }

@@ -30,7 +30,7 @@ public static class OutputFolder
         {
             throw new CliException(ExitCodes.OutputFailed, $"{option}: cannot create folder {root}: {e.Message} (pass a folder you can write to)");
         }
-        var probe = Path.Combine(root, $".acshadow-write-test.{Environment.ProcessId}{TempSuffix}");
+        var probe = Path.Combine(root, $"{WriteTestName}.{Environment.ProcessId}{TempSuffix}");
         try
         {
             File.WriteAllBytes(probe, [0]);
@@ -118,18 +118,21 @@ public static class OutputFolder
         return File.ReadAllBytes(target).AsSpan().SequenceEqual(content);
     }
 
-    /// <summary>True for the name of a temporary file this class writes (<c>NAME.PID.tmp</c>).</summary>
-    public static bool IsTemporary(string path) => TemporaryOwner(path) is not null;
-
     private static string TargetPath(string root, string relativePath) =>
         Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
+
+    /// <summary>The kinds of file a run writes into a folder (and its write test): a user's "notes.2023.tmp" is not one.</summary>
+    private static readonly string[] OutputExtensions = [".json", ".csv", ".svg", WriteTestName];
+
+    private const string WriteTestName = ".acshadow-write-test";
 
     private static int? TemporaryOwner(string path)
     {
         if (!path.EndsWith(TempSuffix, StringComparison.Ordinal)) return null;
         var stem = path[..^TempSuffix.Length];
         var dot = stem.LastIndexOf('.');
-        return dot > 0 && int.TryParse(stem.AsSpan(dot + 1), NumberStyles.None, CultureInfo.InvariantCulture, out var pid) ? pid : null;
+        if (dot <= 0 || !OutputExtensions.Any(e => stem.AsSpan(0, dot).EndsWith(e, StringComparison.Ordinal))) return null;
+        return int.TryParse(stem.AsSpan(dot + 1), NumberStyles.None, CultureInfo.InvariantCulture, out var pid) ? pid : null;
     }
 
     /// <summary>A temporary file whose process is gone was left by a killed run; a live process's is its write in progress.</summary>

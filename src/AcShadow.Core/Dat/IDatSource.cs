@@ -5,7 +5,9 @@ namespace AcShadow.Core.Dat;
 /// <summary>
 /// Everything acshadow needs from a dat: the one seam between the domain and the file format, so a
 /// package reader (Chorizite.DatReaderWriter) can replace <see cref="DatDatabase"/> without touching
-/// the domain. Missing ids give null; malformed objects throw <see cref="DatFormatException"/>.
+/// the domain. Missing ids give null; a damaged object, whatever the damage, throws one
+/// <see cref="DatFormatException"/> reading "corrupt dat: {kind} 0x{id} in {file}: …" with its
+/// <see cref="DatFormatException.ObjectId"/> (an implementation catches its decoder's exceptions here).
 /// </summary>
 public interface IDatSource
 {

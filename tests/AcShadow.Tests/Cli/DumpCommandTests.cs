@@ -98,7 +98,7 @@ public class DumpCommandTests
         using var datFolder = SampleDat.WriteToTempFolder();
         var run = CliRun.Of("dump", "--setup", "0x020019FF", "--dat", Path.Combine(datFolder.Path, "client_cell_1.dat"), "--out", outDir.Path);
         Assert.Equal(3, run.ExitCode);
-        Assert.Contains("is a cell dat (client_cell_1.dat), not a portal dat (client_portal.dat): pass client_portal.dat", Assert.Single(run.ErrorLines));
+        Assert.Contains("is a cell dat, not a portal dat (its header says so): pass client_portal.dat", Assert.Single(run.ErrorLines));
         Assert.Empty(outDir.Files());
     }
 

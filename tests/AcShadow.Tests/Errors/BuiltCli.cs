@@ -23,17 +23,30 @@ public static class BuiltCli
         return info;
     }
 
-    public static (int ExitCode, string Out, string Error) Run(IEnumerable<string> prefix, params string[] args)
+    public static (int ExitCode, string Out, string Error) Run(IEnumerable<string> prefix, params string[] args) =>
+        Wait(Start(prefix, args), "acshadow " + string.Join(' ', args));
+
+    private static (int ExitCode, string Out, string Error) Wait(ProcessStartInfo info, string what)
     {
-        using var process = Process.Start(Start(prefix, args))!;
+        using var process = Process.Start(info)!;
         var output = process.StandardOutput.ReadToEndAsync();
         var error = process.StandardError.ReadToEndAsync();
         if (!process.WaitForExit(TimeSpan.FromMinutes(2)))
         {
             process.Kill(entireProcessTree: true);
-            Assert.Fail($"acshadow {string.Join(' ', args)} did not finish in 2 minutes");
+            Assert.Fail($"{what} did not finish in 2 minutes");
         }
         return (process.ExitCode, output.Result, error.Result);
+    }
+
+    /// <summary>Runs a bash script (after <paramref name="prefix"/>), for limits and mounts that must wrap acshadow.</summary>
+    public static (int ExitCode, string Out, string Error) RunShell(IEnumerable<string> prefix, string script)
+    {
+        var all = prefix.Concat(["bash", "-c", script]).ToArray();
+        var info = new ProcessStartInfo(all[0]) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        foreach (var a in all[1..]) info.ArgumentList.Add(a);
+        info.Environment["DOTNET_EnableWriteXorExecute"] = "0";
+        return Wait(info, script);
     }
 
     /// <summary>
@@ -50,6 +63,12 @@ public static class BuiltCli
 
     /// <summary>Lets another user traverse and read a folder (temporary folders are created 0700).</summary>
     public static void OpenToEveryone(string folder) =>
-        File.SetUnixFileMode(folder, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute
+        SetMode(folder, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute
             | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
+
+    public static void SetMode(string path, UnixFileMode mode)
+    {
+        if (OperatingSystem.IsWindows()) throw new PlatformNotSupportedException("these tests need Unix file modes");
+        File.SetUnixFileMode(path, mode);
+    }
 }

@@ -188,6 +188,42 @@ public class CorruptContentTests
         Assert.False(compiled.PruningIsConservative);
     }
 
+    /// <summary>Every fault above in one dat: audit (with the collision chart) and chart go through all of them.</summary>
+    [Fact]
+    public void Audit_and_chart_go_through_every_fault_in_one_dat()
+    {
+        var leafNamingNothing = new PhysicsBspNode(BspNodeType.Leaf, default, null, null, new Sphere(Vector3.Zero, 1f), 0, 1, [0, 9]);
+        var nanPlane = new PhysicsBspNode(BspNodeType.BPIn, new Plane(new Vector3(float.NaN, 0, 1), 0), leafNamingNothing, null, new Sphere(Vector3.Zero, 1f), 0, 0, []);
+        var gfx = new[]
+        {
+            Box(0x01000010, polygonVertices: [0, 1, 2, 77]),
+            Box(0x01000011, bsp: leafNamingNothing),
+            Box(0x01000012, v => { v[1] = new Vector3(float.NaN, 0, 0); return v; }),
+            Box(0x01000013, bsp: nanPlane),
+            Box(0x01000014, bsp: Chain(200)),
+            Box(0x01000015, bsp: Chain(BspLimits.MaxDepth + 50)),
+        };
+        var setups = gfx.Select((g, i) => Bytes(SetupOf(0x02000010u + (uint)i, g.Id, HealthyGfxObj))).ToList();
+        setups.Add(Bytes(SetupOf(0x02000020, 0x0100FFFF)));
+        setups.Add(Bytes(SetupOf(0x02000021, BrokenGfx) with { PlacementFrames = [Records.PlacementAt(Placement.Resting, new Vector3(float.PositiveInfinity, 0, 0))] }));
+        var (_, shortSetup) = Bytes(SetupOf(0x02000022, BrokenGfx, HealthyGfxObj));
+        setups.Add((0x02000022, shortSetup[..^40]));
+        using var dat = Folder(Portal([.. setups, .. gfx.Select(Bytes), Bytes(Box(BrokenGfx))]));
+        using var output = new TempDir();
+
+        var audit = CliRun.Of("audit", "--dat", dat.Path, "--chart", "--format", "csv", "--out", Path.Combine(output.Path, "audit.csv"));
+        var chart = CliRun.Of("chart", "--all", "--dat", dat.Path, "--out", Path.Combine(output.Path, "chart"), "--quiet", "--spacing", "0.5");
+
+        Assert.True(audit.ExitCode == 0, audit.Error);
+        Assert.True(chart.ExitCode == 0, chart.Error);
+        Assert.Contains("skipped 1 (unreadable, see the warnings): 0x02000022", chart.Out);
+        Assert.Contains("warning: 0x02000022: unreadable, skipped: ", chart.Error);
+        var charted = File.ReadAllLines(Path.Combine(output.Path, "chart", "summary.csv"));
+        // Nine decodable Setups (the healthy one, six with faulty parts, a missing part, an infinite frame), all charted.
+        Assert.Contains(charted.Skip(1), l => l.StartsWith("retail,9,", StringComparison.Ordinal));
+        Assert.DoesNotContain("   at ", audit.Error + chart.Error);
+    }
+
     /// <summary>
     /// The dat stores exactly NumParts frames per placement (there is no frame count), so "fewer frames
     /// than parts" is a Setup whose bytes are one frame short: the reader reads NumParts frames anyway and

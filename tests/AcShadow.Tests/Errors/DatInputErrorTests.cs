@@ -28,7 +28,7 @@ public class DatInputErrorTests
     private static void AssertDatError(CliRun run, TempDir output, string message)
     {
         Assert.Equal(3, run.ExitCode);
-        var line = Assert.Single(run.ErrorLines.Where(l => !l.Contains("SYNTHETIC")));
+        var line = Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC"));
         Assert.Contains(message, line);
         Assert.Empty(output.Files());
     }
@@ -90,7 +90,7 @@ public class DatInputErrorTests
         using var output = new TempDir();
         using var dats = SampleDat.WriteToTempFolder();
         var run = Run(command, output.Path, "--dat", Path.Combine(dats.Path, "client_cell_1.dat"));
-        AssertDatError(run, output, "is a cell dat (client_cell_1.dat), not a portal dat (client_portal.dat): pass client_portal.dat there");
+        AssertDatError(run, output, "is a cell dat, not a portal dat (its header says so): pass client_portal.dat there");
     }
 
     [Theory]
@@ -102,7 +102,7 @@ public class DatInputErrorTests
         var file = Path.Combine(dir.Path, "client_local_English.dat");
         File.WriteAllBytes(file, BrokenDats.Archive(DatFileKind.Local));
         var run = Run(command, output.Path, "--dat", file);
-        AssertDatError(run, output, "is a language dat (client_local_English.dat), not a portal dat (client_portal.dat)");
+        AssertDatError(run, output, "is a language (client_local_English) dat, not a portal dat");
     }
 
     [Theory]
@@ -122,7 +122,18 @@ public class DatInputErrorTests
             _ => output.Path,
         };
         var run = CliRun.Of([command, .. options, last, "--dat", portal, "--cell-dat", portal]);
-        AssertDatError(run, output, "--cell-dat: " + portal + " is a portal dat (client_portal.dat), not a cell dat (client_cell_1.dat): pass client_cell_1.dat there");
+        AssertDatError(run, output, "--cell-dat: " + portal + " is a portal dat, not a cell dat (its header says so): pass client_cell_1.dat there");
+    }
+
+    [Fact]
+    public void A_header_naming_an_unknown_data_set_is_not_a_readable_dat()
+    {
+        using var output = new TempDir();
+        using var dir = new TempDir();
+        var file = Path.Combine(dir.Path, "client_portal.dat");
+        File.WriteAllBytes(file, BrokenDats.Archive((DatFileKind)2560));
+        var run = Run("dump", output.Path, "--dat", file);
+        AssertDatError(run, output, "is not a readable dat: its header names data set 2560, which is no dat acshadow knows");
     }
 
     [Fact]
@@ -136,7 +147,7 @@ public class DatInputErrorTests
     }
 
     [Fact]
-    public void A_FIFO_is_refused_without_being_opened()
+    public async Task A_FIFO_is_refused_without_being_opened()
     {
         using var output = new TempDir();
         using var dir = new TempDir();
@@ -145,8 +156,8 @@ public class DatInputErrorTests
         Assert.True(File.Exists(fifo));
         // Opening a FIFO for reading waits for a writer: a regression would hang here, not fail.
         var run = Task.Run(() => Run("dump", output.Path, "--dat", fifo));
-        Assert.True(run.Wait(TimeSpan.FromSeconds(60)), "acshadow opened the FIFO and waited for a writer");
-        AssertDatError(run.Result, output, "too short for a dat (or not a regular file)");
+        Assert.True(await Task.WhenAny(run, Task.Delay(TimeSpan.FromSeconds(60))) == run, "acshadow opened the FIFO and waited for a writer");
+        AssertDatError(await run, output, "too short for a dat (or not a regular file)");
     }
 
     [Fact]
@@ -156,7 +167,7 @@ public class DatInputErrorTests
         BuiltCli.OpenToEveryone(dir.Path);
         var file = Path.Combine(dir.Path, "client_portal.dat");
         File.WriteAllBytes(file, SampleDat.PortalBytes);
-        File.SetUnixFileMode(file, UnixFileMode.None);
+        BuiltCli.SetMode(file, UnixFileMode.None);
         var outDir = Path.Combine(dir.Path, "out");
 
         var (code, stdout, stderr) = BuiltCli.Run(BuiltCli.AsUnprivilegedUser(), "dump", "--setup", "0x020019FF", "--dat", file, "--out", outDir);

@@ -8,7 +8,7 @@ public class IdErrorTests
     private static void AssertOneLine(CliRun run, int code, string message, TempDir output)
     {
         Assert.Equal(code, run.ExitCode);
-        var line = Assert.Single(run.ErrorLines.Where(l => !l.Contains("SYNTHETIC")));
+        var line = Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC"));
         Assert.Contains(message, line);
         Assert.DoesNotContain("   at ", run.Error);
         Assert.Empty(output.Files());

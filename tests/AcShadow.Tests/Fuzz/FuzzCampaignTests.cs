@@ -88,6 +88,8 @@ public class FuzzCampaignTests
         Assert.NotNull(CaseRunner.Judge("batch", 0, "warning: 0x02000001: unreadable-gfxobj: part 0 (GfxObj 0x01000001) cannot be read: block chain loops\n"));
         Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: the dat is malformed: corrupt dat: Setup 0x02000001 in client_portal.dat: needs 4 more byte(s)\n"));
         Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: --dat: x.dat is not a readable dat: magic\n"));
+        Assert.Null(CaseRunner.Judge("batch", 3, "acshadow: --cell-dat: c.dat is a dat of data set 2560, not a cell dat (client_cell_1.dat): pass client_cell_1.dat there\n"));
+        Assert.NotNull(CaseRunner.Judge("batch", 3, "acshadow: reading the dat failed: Unable to read beyond the end of the stream.\n"));
         Assert.Null(CaseRunner.Judge("dump", 4, "acshadow: Setup 0x02000001 is not in x\n"));
 
         using var folder = new Support.TempDir();
@@ -97,5 +99,13 @@ public class FuzzCampaignTests
         File.WriteAllText(Path.Combine(folder.Path, "a.json"), "{}");
         File.WriteAllText(Path.Combine(folder.Path, "b.json.123.tmp"), "{}");
         Assert.Contains("temporary file", OutputCheck.Problem(folder.Path));
+        File.Delete(Path.Combine(folder.Path, "b.json.123.tmp"));
+        var sha = Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData("{}"u8));
+        File.WriteAllText(Path.Combine(folder.Path, "index.json"), $"{{\"files\": [{{\"path\": \"a.json\", \"sha256\": \"{sha}\"}}]}}");
+        Assert.Null(OutputCheck.Problem(folder.Path));
+        File.WriteAllText(Path.Combine(folder.Path, "a.json"), "[]");
+        Assert.Contains("does not have the bytes", OutputCheck.Problem(folder.Path));
+        File.Delete(Path.Combine(folder.Path, "a.json"));
+        Assert.Contains("not there", OutputCheck.Problem(folder.Path));
     }
 }
