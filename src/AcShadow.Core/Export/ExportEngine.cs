@@ -62,7 +62,7 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
         var file = new OutputFile(BspFileFormat.PathFor(id), OutputKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count);
         var diagnostics = dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray();
         return bspSink is null
-            ? new BspDumpResult(file, file.RelativePath, [FileEntry.Of(file)], diagnostics)
+            ? new BspDumpResult(file, file.RelativePath, [], diagnostics)
             : new BspDumpResult(null, file.RelativePath, bspSink(file), diagnostics);
     }
 }

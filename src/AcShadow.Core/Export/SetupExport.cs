@@ -4,8 +4,9 @@ using AcShadow.Core.Shapes;
 namespace AcShadow.Core.Export;
 
 /// <summary>
-/// A Setup's export: its shadow file, the BSP dumps its shapes reference (<see cref="BspEntries"/>
-/// always; <see cref="BspFiles"/>, their bytes, unless the engine streams dumps), and every diagnostic.
+/// A Setup's export: its shadow file, the BSP dumps its shapes reference (their bytes in
+/// <see cref="BspFiles"/>, or, when the engine streams dumps, the entries of what was written in
+/// <see cref="BspEntries"/>), and every diagnostic.
 /// </summary>
 public sealed record SetupExport(
     Setup Setup,
