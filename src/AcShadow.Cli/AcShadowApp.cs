@@ -46,7 +46,7 @@ public static class AcShadowApp
             var (code, message) = e switch
             {
                 CliException c => (c.ExitCode, c.Message),
-                DatFormatException d => (ExitCodes.DatUnreadable, $"the dat is malformed: {d.Message}"),
+                DatFormatException d => (ExitCodes.DatUnreadable, d.Message.StartsWith("corrupt dat", StringComparison.Ordinal) ? d.Message : $"corrupt dat: {d.Message}"),
                 // Output writes and the --setups file are wrapped where they happen, so a bare I/O error is the dat's.
                 IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),
                 _ => (ExitCodes.InternalError, $"internal error: {e.Message} (run with --verbose for the stack trace, and please report it)"),

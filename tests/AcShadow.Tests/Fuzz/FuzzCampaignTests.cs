@@ -84,9 +84,9 @@ public class FuzzCampaignTests
     {
         Assert.NotNull(CaseRunner.Judge("dump", 1, "acshadow: internal error: boom (run with --verbose ...)\nSystem.OverflowException: boom\n"));
         Assert.NotNull(CaseRunner.Judge("dump", 6, "acshadow: cannot write x\n"));
-        Assert.NotNull(CaseRunner.Judge("dump", 3, "acshadow: the dat is malformed: needs 4 more byte(s) at offset 3\n"));
+        Assert.NotNull(CaseRunner.Judge("dump", 3, "acshadow: corrupt dat: needs 4 more byte(s) at offset 3\n"));
         Assert.NotNull(CaseRunner.Judge("batch", 0, "warning: 0x02000001: unreadable-gfxobj: part 0 (GfxObj 0x01000001) cannot be read: block chain loops\n"));
-        Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: the dat is malformed: corrupt dat: Setup 0x02000001 in client_portal.dat: needs 4 more byte(s)\n"));
+        Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: corrupt dat: Setup 0x02000001 in client_portal.dat: needs 4 more byte(s)\n"));
         Assert.Null(CaseRunner.Judge("dump", 3, "acshadow: --dat: x.dat is not a readable dat: magic\n"));
         Assert.Null(CaseRunner.Judge("batch", 3, "acshadow: --cell-dat: c.dat is a dat of data set 2560, not a cell dat (client_cell_1.dat): pass client_cell_1.dat there\n"));
         Assert.NotNull(CaseRunner.Judge("batch", 3, "acshadow: reading the dat failed: Unable to read beyond the end of the stream.\n"));
