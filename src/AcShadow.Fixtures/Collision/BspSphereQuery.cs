@@ -25,6 +25,8 @@ public sealed class BspSphereQuery : ISphereOverlap
     private readonly CompiledPolygon[] _polygons;
     private readonly CompiledBspNode[] _nodes;
     private readonly int[] _leafPolygons;
+    /// <summary>The most pending nodes a traversal can hold: one per level of the deepest path, plus one.</summary>
+    private readonly int _stackSize;
 
     public CompiledBsp Bsp { get; }
 
@@ -34,6 +36,7 @@ public sealed class BspSphereQuery : ISphereOverlap
         _polygons = bsp.Polygons;
         _nodes = bsp.Nodes;
         _leafPolygons = bsp.LeafPolygons;
+        _stackSize = StackSizeOf(_nodes);
     }
 
     public static BspSphereQuery From(BspDump dump) => new(CompiledBsp.Compile(dump));
@@ -43,8 +46,9 @@ public sealed class BspSphereQuery : ISphereOverlap
         if (!SphereBounds.IsValidProbe(center, radius) || _nodes.Length == 0) return false;
         if (!SphereBounds.BroadPhaseHits(_nodes[0], center, radius)) return false;
         var reach = radius - PhysicsEpsilon.Value;
-        // Entries are node << 1 | centre-check; a tree never holds more pending nodes than it has nodes.
-        Span<int> stack = _nodes.Length <= 256 ? stackalloc int[_nodes.Length] : new int[_nodes.Length];
+        // Entries are node << 1 | centre-check. Sized by the tree's height, not its node count, so a query
+        // neither allocates nor clears a node-sized buffer.
+        Span<int> stack = stackalloc int[_stackSize];
         var top = 0;
         stack[top++] = 1;
         while (top > 0)
@@ -77,6 +81,25 @@ public sealed class BspSphereQuery : ISphereOverlap
             }
         }
         return false;
+    }
+
+    /// <summary>
+    /// Popping a node at depth k leaves at most one pending sibling per level above it and pushes two
+    /// children: never more than height + 2 entries. Children come after their parent (CompiledBsp
+    /// enforces preorder), so one forward pass finds every depth.
+    /// </summary>
+    private static int StackSizeOf(CompiledBspNode[] nodes)
+    {
+        var depth = new int[nodes.Length];
+        var height = 0;
+        for (var i = 0; i < nodes.Length; i++)
+        {
+            height = Math.Max(height, depth[i]);
+            if (nodes[i].IsLeaf) continue;
+            if (nodes[i].Pos >= 0) depth[nodes[i].Pos] = depth[i] + 1;
+            if (nodes[i].Neg >= 0) depth[nodes[i].Neg] = depth[i] + 1;
+        }
+        return height + 2;
     }
 
     private static void Push(Span<int> stack, ref int top, int child, bool centreCheck)
