@@ -25,6 +25,11 @@ public sealed class BspSphereQuery : ISphereOverlap
     private readonly CompiledPolygon[] _polygons;
     private readonly CompiledBspNode[] _nodes;
     private readonly int[] _leafPolygons;
+    /// <summary>
+    /// Each <see cref="_leafPolygons"/> entry's plane (normal, d), side by side in leaf order: the plane
+    /// test that rejects most polygons reads one contiguous run instead of chasing a polygon object each.
+    /// </summary>
+    private readonly Vector4[] _leafPlanes;
     /// <summary>The most pending nodes a traversal can hold: one per level of the deepest path, plus one.</summary>
     private readonly int _stackSize;
 
@@ -36,6 +41,7 @@ public sealed class BspSphereQuery : ISphereOverlap
         _polygons = bsp.Polygons;
         _nodes = bsp.Nodes;
         _leafPolygons = bsp.LeafPolygons;
+        _leafPlanes = Array.ConvertAll(_leafPolygons, k => new Vector4(_polygons[k].Normal, _polygons[k].D));
         _stackSize = StackSizeOf(_nodes);
     }
 
@@ -61,8 +67,7 @@ public sealed class BspSphereQuery : ISphereOverlap
                 if (node.ListedPolygonCount == 0) continue;
                 if (centreCheck && node.Solid) return true;
                 if (!SphereBounds.NodeSphereHits(node, center, radius)) continue;
-                for (var k = 0; k < node.PolygonCount; k++)
-                    if (PolygonSphereTest.Touches(_polygons[_leafPolygons[node.PolygonStart + k]], center, radius)) return true;
+                if (LeafTouches(node.PolygonStart, node.PolygonCount, center, radius, reach)) return true;
                 continue;
             }
             if (!SphereBounds.NodeSphereHits(node, center, radius)) continue;
@@ -79,6 +84,23 @@ public sealed class BspSphereQuery : ISphereOverlap
                 Push(stack, ref top, node.Pos, centreCheck);
                 Push(stack, ref top, node.Neg, false);
             }
+        }
+        return false;
+    }
+
+    /// <summary>
+    /// <see cref="PolygonSphereTest.Touches"/> over a leaf's polygons, its first rejection (|dist| &gt; r − ε,
+    /// the same float operations in the same order) done here on the packed planes.
+    /// </summary>
+    private bool LeafTouches(int start, int count, Vector3 center, float radius, float reach)
+    {
+        var planes = _leafPlanes.AsSpan(start, count);
+        for (var k = 0; k < planes.Length; k++)
+        {
+            ref readonly var plane = ref planes[k];
+            var dist = plane.X * center.X + plane.Y * center.Y + plane.Z * center.Z + plane.W;
+            if (MathF.Abs(dist) > reach) continue;
+            if (PolygonSphereTest.Touches(_polygons[_leafPolygons[start + k]], center, radius)) return true;
         }
         return false;
     }
