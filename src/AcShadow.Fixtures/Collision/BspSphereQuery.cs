@@ -30,6 +30,11 @@ public sealed class BspSphereQuery : ISphereOverlap
     /// test that rejects most polygons reads one contiguous run instead of chasing a polygon object each.
     /// </summary>
     private readonly Vector4[] _leafPlanes;
+    /// <summary>
+    /// Each entry's polygon bounding sphere (centre, radius plus slack), beside <see cref="_leafPlanes"/>:
+    /// a polygon on a plane the query reaches but far from its centre is dismissed without the edge walk.
+    /// </summary>
+    private readonly Vector4[] _leafSpheres;
     /// <summary>The most pending nodes a traversal can hold: one per level of the deepest path, plus one.</summary>
     private readonly int _stackSize;
 
@@ -42,6 +47,7 @@ public sealed class BspSphereQuery : ISphereOverlap
         _nodes = bsp.Nodes;
         _leafPolygons = bsp.LeafPolygons;
         _leafPlanes = Array.ConvertAll(_leafPolygons, k => new Vector4(_polygons[k].Normal, _polygons[k].D));
+        _leafSpheres = Array.ConvertAll(_leafPolygons, k => BoundingSphereOf(_polygons[k]));
         _stackSize = StackSizeOf(_nodes);
     }
 
@@ -100,9 +106,36 @@ public sealed class BspSphereQuery : ISphereOverlap
             ref readonly var plane = ref planes[k];
             var dist = plane.X * center.X + plane.Y * center.Y + plane.Z * center.Z + plane.W;
             if (MathF.Abs(dist) > reach) continue;
+            ref readonly var sphere = ref _leafSpheres[start + k];
+            float dx = center.X - sphere.X, dy = center.Y - sphere.Y, dz = center.Z - sphere.Z, sum = sphere.W + radius;
+            if (dx * dx + dy * dy + dz * dz > sum * sum) continue;
             if (PolygonSphereTest.Touches(_polygons[_leafPolygons[start + k]], center, radius)) return true;
         }
         return false;
+    }
+
+    /// <summary>
+    /// A sphere no touching query can miss. PolygonSphereTest hits only through a point q of the polygon's
+    /// plane inside the hull of the vertices' projections with |centre − q| ≤ r − ε, so |centre − c| ≤
+    /// r + max|v − c| + |plane distance of c|. The slack covers that last term, non-planar vertices and
+    /// float rounding many times over; it only lets a few more polygons through to the exact test.
+    /// </summary>
+    private static Vector4 BoundingSphereOf(CompiledPolygon polygon)
+    {
+        var vertices = polygon.Vertices;
+        double cx = 0, cy = 0, cz = 0;
+        foreach (var v in vertices) { cx += v.X; cy += v.Y; cz += v.Z; }
+        cx /= vertices.Length; cy /= vertices.Length; cz /= vertices.Length;
+        double reachOut = 0, deviation = 0, scale = Math.Abs(cx) + Math.Abs(cy) + Math.Abs(cz);
+        foreach (var v in vertices)
+        {
+            double dx = v.X - cx, dy = v.Y - cy, dz = v.Z - cz;
+            reachOut = Math.Max(reachOut, Math.Sqrt(dx * dx + dy * dy + dz * dz));
+            deviation = Math.Max(deviation, Math.Abs((double)polygon.Normal.X * v.X + (double)polygon.Normal.Y * v.Y + (double)polygon.Normal.Z * v.Z + polygon.D));
+        }
+        var slack = 4 * deviation + 1e-4 * (scale + reachOut) + 1e-3;
+        var radius = (float)(reachOut + slack);
+        return float.IsFinite(radius) ? new Vector4((float)cx, (float)cy, (float)cz, radius) : new Vector4(0f, 0f, 0f, float.PositiveInfinity);
     }
 
     /// <summary>
