@@ -8,17 +8,20 @@ namespace AcShadow.Bench.Harness;
 public sealed record CachedDat(string Directory, int Setups, int GfxObjs, int Seed, long PortalBytes, double GenerationSeconds, bool WasCached);
 
 /// <summary>
-/// Forged scale dats cached by their parameters (DIR/scale-s{N}-g{M}-seed{S}/): the forge is deterministic,
-/// so a folder's name says everything about its bytes. Made in a temporary folder and renamed, so an
+/// Forged scale dats cached by their parameters and the forge build (DIR/scale-s{N}-g{M}-seed{S}-forge{V}/,
+/// V from the forge assembly's deterministic module id): the forge is deterministic, so a folder's name says
+/// everything about its bytes, and a changed generator never measures a stale dat. Made in a temporary folder and renamed, so an
 /// interrupted run never leaves a half-written dat in the cache.
 /// </summary>
 public static class ScaleDatCache
 {
     private const string GenerationFile = "generation-seconds.txt";
 
+    private static string ForgeVersion => typeof(ScaleSpecGenerator).Assembly.ManifestModule.ModuleVersionId.ToString("N")[..8];
+
     public static CachedDat Get(string cacheDir, int setups, int gfxObjs, int seed, TextWriter log)
     {
-        var dir = Path.Combine(cacheDir, string.Create(CultureInfo.InvariantCulture, $"scale-s{setups}-g{gfxObjs}-seed{seed}"));
+        var dir = Path.Combine(cacheDir, string.Create(CultureInfo.InvariantCulture, $"scale-s{setups}-g{gfxObjs}-seed{seed}-forge{ForgeVersion}"));
         var portal = Path.Combine(dir, ForgeApp.PortalFileName);
         if (File.Exists(portal) && File.Exists(Path.Combine(dir, GenerationFile)))
         {
