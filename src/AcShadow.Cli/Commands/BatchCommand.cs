@@ -4,6 +4,7 @@ using System.Globalization;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
@@ -61,7 +62,8 @@ public static class BatchCommand
         };
         RefuseForeignFiles(outDir, plan);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
-        var source = new BoundedDatSource(dat.Portal.Archive, dat.Portal.Info);
+        // A second view over the same archive; `dat` owns and disposes the archive.
+        var source = new DatDatabase(dat.Portal.Archive, cacheCapacity: 256);
         var reuse = new BatchReuse(incremental ? ReadState(outDir) : null, IncrementalState.ToolKey(options, formats),
             dat.Portal.Archive.ReadObjectBytes,
             file => HasSize(outDir, file));

@@ -5,16 +5,22 @@ namespace AcShadow.Core.Dat;
 
 /// <summary>
 /// <see cref="IDatSource"/> over a <see cref="DatArchive"/>: decodes objects on demand and caches them,
-/// so a GfxObj shared by many Setups is decoded once. Safe to use from many threads.
+/// so a GfxObj shared by many Setups is decoded once. With a cache capacity it keeps at most that many
+/// decoded objects (oldest dropped first), so a batch over a whole dat holds a working set, not the dat.
+/// Safe to use from many threads; the archive serialises its own reads.
 /// </summary>
 public sealed class DatDatabase : IDatSource, IDisposable
 {
     private readonly DatArchive _archive;
     private readonly ConcurrentDictionary<uint, Lazy<object?>> _cache = new();
+    private readonly ConcurrentQueue<uint> _order = new();
+    private readonly int? _capacity;
 
-    public DatDatabase(DatArchive archive)
+    public DatDatabase(DatArchive archive, int? cacheCapacity = null)
     {
+        if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
         _archive = archive;
+        _capacity = cacheCapacity;
         Info = new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize);
     }
 
@@ -33,24 +39,30 @@ public sealed class DatDatabase : IDatSource, IDisposable
     private T? Decode<T>(uint id, DatObjectKind kind, Func<DatBinaryReader, T> read, Func<T, uint> idOf) where T : class
     {
         if (!kind.Contains(id)) return null;
-        var lazy = _cache.GetOrAdd(id, key => new Lazy<object?>(() =>
+        var created = new Lazy<object?>(() =>
         {
             // The IDatSource boundary: whatever damaged bytes make the chain walk or a decoder throw
             // (bounds, overflow, end of stream, a bad tag, a cycle) leaves here as one "corrupt dat" naming the object.
             try
             {
-                var bytes = _archive.ReadObjectBytesUnnamed(key);
+                var bytes = _archive.ReadObjectBytesUnnamed(id);
                 if (bytes is null) return null;
                 var value = read(new DatBinaryReader(bytes));
                 // Every object starts with its own id: a mismatch means the directory points at the wrong bytes.
-                if (idOf(value) != key) throw new DatFormatException($"the object's bytes carry id 0x{idOf(value):X8}");
+                if (idOf(value) != id) throw new DatFormatException($"the object's bytes carry id 0x{idOf(value):X8}");
                 return value;
             }
             catch (Exception e) when (DatArchive.IsReadFailure(e))
             {
-                throw DatFormatException.CorruptObject($"{kind} 0x{key:X8} in {_archive.Name}", key, e);
+                throw DatFormatException.CorruptObject($"{kind} 0x{id:X8} in {_archive.Name}", id, e);
             }
-        }, LazyThreadSafetyMode.ExecutionAndPublication));
+        }, LazyThreadSafetyMode.ExecutionAndPublication);
+        var lazy = _cache.GetOrAdd(id, created);
+        if (_capacity is { } capacity && ReferenceEquals(lazy, created))
+        {
+            _order.Enqueue(id);
+            while (_cache.Count > capacity && _order.TryDequeue(out var oldest)) _cache.TryRemove(oldest, out _);
+        }
         return (T?)lazy.Value;
     }
 

@@ -23,7 +23,7 @@ public static class CollisionComparison
     public static CollisionResult Run(DatDatabase dat, int repetitions)
     {
         // Find the big ones without keeping every decoded GfxObj: a small working set, then re-read the chosen.
-        var scan = new BoundedDatSource(dat.Archive, dat.Info, 64);
+        var scan = new DatDatabase(dat.Archive, cacheCapacity: 64);
         var big = dat.ListIds(DatObjectKind.GfxObj)
             .Where(id => scan.ReadGfxObj(id) is { PhysicsBsp: not null } g && g.PhysicsPolygons.Count >= MinPolygons)
             .ToArray();
