@@ -82,7 +82,8 @@ public static class BatchIndexWriter
         .Add("iteration", info.Iteration)
         .Add("blockSize", info.BlockSize);
 
-    private static JsonNode File(FileEntry f) => new JsonObj()
+    /// <summary>One file's entry, as index.json and incremental.json both record it.</summary>
+    internal static JsonNode File(FileEntry f) => new JsonObj()
         .Add("path", f.RelativePath)
         .Add("kind", BatchIndexFormat.KindName(f.Kind))
         .Add("id", JsonIds.Format(f.Id))

@@ -19,14 +19,7 @@ public static class IncrementalStateFile
             .Add("fingerprint", s.Fingerprint)
             .Add("parts", JsonArr.Of(s.Parts.Select(JsonIds.Format)))
             .Add("diagnostics", s.Diagnostics)
-            .Add("files", JsonArr.Of(s.Files, f => new JsonObj()
-                .Add("path", f.RelativePath)
-                .Add("kind", BatchIndexFormat.KindName(f.Kind))
-                .Add("id", JsonIds.Format(f.Id))
-                .Add("shapes", f.ShapeCount)
-                .Add("polygons", f.PolygonCount)
-                .Add("bytes", f.Bytes)
-                .Add("sha256", f.Sha256))))));
+            .Add("files", JsonArr.Of(s.Files, BatchIndexWriter.File)))));
 
     public static IncrementalState? TryRead(byte[] utf8)
     {
