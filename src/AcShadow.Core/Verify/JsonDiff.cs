@@ -130,7 +130,15 @@ public static class JsonDiff
     private static string Member(string path, string name) =>
         name.Length > 0 && name.All(c => char.IsAsciiLetterOrDigit(c) || c == '_') && !char.IsAsciiDigit(name[0])
             ? $"{path}.{name}"
-            : $"{path}[{JsonSerializer.Serialize(name)}]";
+            : $"{path}[{QuotedName(name)}]";
+
+    /// <summary>A member name as a JSON string literal (no reflection: the tool is published ahead-of-time).</summary>
+    private static string QuotedName(string name)
+    {
+        using var stream = new MemoryStream();
+        using (var writer = new Utf8JsonWriter(stream)) writer.WriteStringValue(name);
+        return System.Text.Encoding.UTF8.GetString(stream.ToArray());
+    }
 
     /// <summary>The value as compact JSON, shortened for one-line reports.</summary>
     private static string Text(JsonElement e)

@@ -14,6 +14,8 @@ namespace AcShadow.Forge.Spec;
 public static class SpecJson
 {
     private static readonly JsonSerializerOptions Options = CreateOptions();
+    private static readonly JsonTypeInfo<ForgeSpec> SpecType = (JsonTypeInfo<ForgeSpec>)Options.GetTypeInfo(typeof(ForgeSpec));
+    private static readonly JsonTypeInfo<string> NameType = (JsonTypeInfo<string>)Options.GetTypeInfo(typeof(string));
 
     private static JsonSerializerOptions CreateOptions()
     {
@@ -27,7 +29,8 @@ public static class SpecJson
             NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals,
             DefaultIgnoreCondition = JsonIgnoreCondition.WhenWritingDefault,
             Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
-            TypeInfoResolver = new DefaultJsonTypeInfoResolver { Modifiers = { OmitEmptyCollections } },
+            // Source-generated metadata: the CLI that carries the forge is published ahead-of-time.
+            TypeInfoResolver = SpecJsonContext.Default.WithAddedModifier(OmitEmptyCollections),
         };
         options.Converters.Add(new VectorConverter());
         options.Converters.Add(new QuaternionConverter());
@@ -40,7 +43,7 @@ public static class SpecJson
     {
         try
         {
-            return JsonSerializer.Deserialize<ForgeSpec>(json, Options)
+            return JsonSerializer.Deserialize(json, SpecType)
                 ?? throw new SpecException($"{sourceName}: the spec is JSON null; expected an object {{ \"gfxObjs\": [...], \"setups\": [...] }}");
         }
         catch (JsonException e)
@@ -66,7 +69,7 @@ public static class SpecJson
     /// <summary>Indented JSON in which vectors, id lists, polygons, frames and other short leaves stay on one line.</summary>
     public static string Serialize(ForgeSpec spec)
     {
-        using var document = JsonDocument.Parse(JsonSerializer.Serialize(spec, Options));
+        using var document = JsonDocument.Parse(JsonSerializer.Serialize(spec, SpecType));
         var sb = new StringBuilder();
         Format(document.RootElement, sb, "");
         return sb.Append('\n').ToString();
@@ -86,7 +89,7 @@ public static class SpecJson
             {
                 if (!first) sb.Append(",\n");
                 first = false;
-                sb.Append(inner).Append(JsonSerializer.Serialize(p.Name, Options)).Append(": ");
+                sb.Append(inner).Append(JsonSerializer.Serialize(p.Name, NameType)).Append(": ");
                 Format(p.Value, sb, inner);
             }
             sb.Append('\n').Append(indent).Append('}');
@@ -133,7 +136,7 @@ public static class SpecJson
                 {
                     if (!first) sb.Append(", ");
                     first = false;
-                    sb.Append(JsonSerializer.Serialize(p.Name, Options)).Append(": ");
+                    sb.Append(JsonSerializer.Serialize(p.Name, NameType)).Append(": ");
                     Compact(p.Value, sb);
                 }
                 sb.Append('}');
