@@ -1,4 +1,5 @@
 using System.Buffers.Binary;
+using System.Collections.Concurrent;
 
 namespace AcShadow.Core.Dat;
 
@@ -6,21 +7,25 @@ namespace AcShadow.Core.Dat;
 /// The container layer of a dat file: header, B-tree directory and block chains. Each block starts
 /// with a 4-byte offset of the next block; the rest of the block is object data. Reads are serialised
 /// on the stream the caller hands in, so one archive may be shared by many threads.
+/// The directory is read as it is needed: a lookup before anything asked for the whole list searches the
+/// B-tree from the root (a few nodes, so one `dump` costs the same on a 1 MB and a 200 MB dat); the first
+/// call for the whole list (<see cref="Entries"/>, <see cref="MaxIteration"/>) walks and checks every node,
+/// and lookups use that list from then on.
 /// </summary>
 public sealed class DatArchive : IDisposable
 {
     private readonly Stream _stream;
     private readonly bool _ownsStream;
     private readonly object _gate = new();
-    private readonly DatDirectoryEntry[] _entries;
-    private readonly Dictionary<uint, int> _indexById;
+    private readonly Lazy<Directory> _directory;
+    private readonly ConcurrentDictionary<int, DatBTreeNode> _searchedNodes = new();
 
     public string Name { get; }
     public DatHeader Header { get; }
     public long Length { get; }
 
     /// <summary>All directory entries, sorted by id.</summary>
-    public IReadOnlyList<DatDirectoryEntry> Entries => _entries;
+    public IReadOnlyList<DatDirectoryEntry> Entries => _directory.Value.Entries;
 
     private DatArchive(Stream stream, bool ownsStream, string name)
     {
@@ -32,9 +37,15 @@ public sealed class DatArchive : IDisposable
             throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
         var headerBytes = ReadRaw(0, DatHeader.Size);
         Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
-        _entries = ReadDirectory();
-        _indexById = new Dictionary<uint, int>(_entries.Length);
-        for (var i = 0; i < _entries.Length; i++) _indexById[_entries[i].Id] = i;
+        _directory = new Lazy<Directory>(() => new Directory(ReadDirectory()), LazyThreadSafetyMode.ExecutionAndPublication);
+        if (Header.RootBlock != 0) Node(Header.RootBlock);
+    }
+
+    /// <summary>Every entry, sorted by id, and where each id sits in that list.</summary>
+    private sealed class Directory(DatDirectoryEntry[] entries)
+    {
+        public DatDirectoryEntry[] Entries { get; } = entries;
+        public Dictionary<uint, int> IndexById { get; } = entries.Select((e, i) => (e.Id, i)).ToDictionary(p => p.Id, p => p.i);
     }
 
     /// <summary>Opens a dat from a readable, seekable stream.</summary>
@@ -54,13 +65,57 @@ public sealed class DatArchive : IDisposable
         }
     }
 
-    public bool Contains(uint id) => _indexById.ContainsKey(id);
+    public bool Contains(uint id) => TryGetEntry(id, out _);
 
     public bool TryGetEntry(uint id, out DatDirectoryEntry entry)
     {
-        if (_indexById.TryGetValue(id, out var i)) { entry = _entries[i]; return true; }
+        if (_directory.IsValueCreated)
+        {
+            var directory = _directory.Value;
+            if (directory.IndexById.TryGetValue(id, out var i)) { entry = directory.Entries[i]; return true; }
+            entry = default;
+            return false;
+        }
+        return TrySearch(id, out entry);
+    }
+
+    /// <summary>
+    /// A B-tree search: in each node the entries are sorted by id and branch i holds the ids between
+    /// entries i-1 and i. Nodes read on the way are kept (the root and upper levels serve every lookup).
+    /// </summary>
+    private bool TrySearch(uint id, out DatDirectoryEntry entry)
+    {
         entry = default;
-        return false;
+        var offset = Header.RootBlock;
+        if (offset == 0) return false;
+        for (var depth = 0; ; depth++)
+        {
+            // Read through an object lookup, which names the dat file itself: these messages do not repeat it.
+            if (depth > MaxDepth) throw new DatFormatException($"the directory's B-tree is deeper than {MaxDepth} levels (a cycle?)");
+            var node = Node(offset);
+            int low = 0, high = node.Entries.Count - 1;
+            while (low <= high)
+            {
+                var mid = (low + high) >>> 1;
+                var at = node.Entries[mid].Id;
+                if (at == id) { entry = node.Entries[mid]; return true; }
+                if (at < id) low = mid + 1; else high = mid - 1;
+            }
+            if (node.IsLeaf) return false;
+            var parent = offset;
+            offset = node.Branches[low];
+            if (offset == 0) throw new DatFormatException($"B-tree node 0x{parent:X8} has no branch {low} though it is not a leaf");
+        }
+    }
+
+    private const int MaxDepth = 32;
+
+    private DatBTreeNode Node(int offset) => _searchedNodes.GetOrAdd(offset, ReadNode);
+
+    private DatBTreeNode ReadNode(int offset)
+    {
+        var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
+        return DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
     }
 
     /// <summary>
@@ -96,7 +151,7 @@ public sealed class DatArchive : IDisposable
         e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException);
 
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
-    public int MaxIteration => _entries.Length == 0 ? 0 : _entries.Max(e => e.Iteration);
+    public int MaxIteration => Entries.Count == 0 ? 0 : Entries.Max(e => e.Iteration);
 
     private DatDirectoryEntry[] ReadDirectory()
     {
@@ -112,10 +167,9 @@ public sealed class DatArchive : IDisposable
 
         void Walk(int offset, int depth)
         {
-            if (depth > 32) throw new DatFormatException($"{Name}: B-tree deeper than 32 levels (cycle?)");
+            if (depth > MaxDepth) throw new DatFormatException($"{Name}: B-tree deeper than {MaxDepth} levels (cycle?)");
             if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
-            var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
-            var node = DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
+            var node = _searchedNodes.TryGetValue(offset, out var searched) ? searched : ReadNode(offset);
             result.AddRange(node.Entries);
             foreach (var child in node.Branches) Walk(child, depth + 1);
         }
