@@ -121,7 +121,9 @@ public static class OutputFolder
         {
             return File.OpenHandle(temp, FileMode.CreateNew, FileAccess.Write, FileShare.Read);
         }
-        catch (DirectoryNotFoundException)
+        // ENOENT: the folder is missing. .NET names it a missing file instead when another thread created
+        // the folder between the failed open and the error's mapping, so both mean "make the folder".
+        catch (IOException e) when (e is DirectoryNotFoundException or FileNotFoundException)
         {
             Directory.CreateDirectory(Path.GetDirectoryName(temp)!);
         }
