@@ -137,6 +137,7 @@ public sealed class DatArchive : IDisposable
         var filled = 0;
         var block = start;
         HashSet<int>? visited = null;
+        Span<byte> link = stackalloc byte[4];
         lock (_gate)
         {
             while (filled < size)
@@ -145,12 +146,13 @@ public sealed class DatArchive : IDisposable
                     throw new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file");
                 if (filled > 0 && !(visited ??= [start]).Add(block))
                     throw new DatFormatException($"{what} loops back to block 0x{block:X8}");
-                var next = BinaryPrimitives.ReadInt32LittleEndian(ReadRawLocked(block, 4));
+                ReadRawLocked(block, link);
+                var next = BinaryPrimitives.ReadInt32LittleEndian(link);
                 var take = Math.Min(payload, size - filled);
                 if (block + 4L + take > Length)
                     throw new DatFormatException($"{what} runs past the end of the file");
                 if (filled + take > buffer.Length) Array.Resize(ref buffer, (int)Math.Min(size, Math.Max(2L * buffer.Length, filled + take)));
-                ReadRawLocked(block + 4, take).CopyTo(buffer.AsSpan(filled));
+                ReadRawLocked(block + 4, buffer.AsSpan(filled, take));
                 filled += take;
                 block = next & 0x7FFFFFFF;
             }
@@ -160,15 +162,16 @@ public sealed class DatArchive : IDisposable
 
     private byte[] ReadRaw(long offset, int count)
     {
-        lock (_gate) return ReadRawLocked(offset, count);
+        var bytes = new byte[count];
+        lock (_gate) ReadRawLocked(offset, bytes);
+        return bytes;
     }
 
-    private byte[] ReadRawLocked(long offset, int count)
+    /// <summary>Straight into the caller's span: a chain's blocks land in the object's buffer, no array per block.</summary>
+    private void ReadRawLocked(long offset, Span<byte> into)
     {
-        var bytes = new byte[count];
         _stream.Position = offset;
-        _stream.ReadExactly(bytes);
-        return bytes;
+        _stream.ReadExactly(into);
     }
 
     public void Dispose()

@@ -38,7 +38,7 @@ public sealed record GfxObj(
             var uvCount = r.ReadUInt16();
             var origin = r.ReadVector3();
             r.ReadVector3(); // normal: drawing only
-            r.ReadBytes(uvCount * 8);
+            r.Skip(uvCount * 8);
             vertices[key] = origin;
         }
 
