@@ -9,6 +9,12 @@ namespace AcShadow.Core.Dat;
 /// </summary>
 public sealed class DatArchive : IDisposable
 {
+    /// <summary>
+    /// An object up to this many blocks gets its exact buffer at once (nearly every object of a real dat);
+    /// only larger ones grow as their chain is read, so growing and copying is rare.
+    /// </summary>
+    private const int UpFrontBlocks = 1024;
+
     private readonly Stream _stream;
     private readonly bool _ownsStream;
     private readonly object _gate = new();
@@ -124,7 +130,8 @@ public sealed class DatArchive : IDisposable
     /// <summary>
     /// Follows a block chain for <paramref name="size"/> bytes. A chain visits each block at most once (a
     /// cycle is refused, not read round again as data), and the buffer grows with the blocks actually
-    /// read: a size a corrupt directory inflates cannot allocate more than the file holds.
+    /// read beyond the first <see cref="UpFrontBlocks"/>: a size a corrupt directory inflates cannot allocate
+    /// more than the file holds.
     /// </summary>
     private byte[] ReadChain(int start, int size, string what)
     {
@@ -133,7 +140,7 @@ public sealed class DatArchive : IDisposable
         var maxBlocks = Length / blockSize + 1;
         if (size > maxBlocks * payload)
             throw new DatFormatException($"{what} would hold {size} bytes, more than the {Length}-byte file can");
-        var buffer = new byte[Math.Min(size, 64 * payload)];
+        var buffer = new byte[Math.Min(size, UpFrontBlocks * payload)];
         var filled = 0;
         var block = start;
         HashSet<int>? visited = null;
