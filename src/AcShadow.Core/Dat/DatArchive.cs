@@ -85,14 +85,34 @@ public sealed class DatArchive : IDisposable
         }
     }
 
-    /// <summary>As <see cref="ReadObjectBytes"/>, but a damaged chain's message leaves naming the object to the caller.</summary>
+    /// <summary>
+    /// As <see cref="ReadObjectBytes(uint)"/>, into <paramref name="buffer"/> (replaced by a larger one when too
+    /// small): the object's length, or -1 when the dat has no such id. For callers that only look at each
+    /// object's bytes once (fingerprints), so they reuse one buffer instead of an array per object.
+    /// </summary>
+    public int ReadObjectBytes(uint id, ref byte[] buffer)
+    {
+        try
+        {
+            if (!TryGetEntry(id, out var entry)) return -1;
+            buffer = ReadChain(entry.Offset, CheckedSize(entry), "its block chain", buffer);
+            return (int)entry.Size;
+        }
+        catch (Exception e) when (IsReadFailure(e))
+        {
+            throw DatFormatException.CorruptObject($"object 0x{id:X8} in {Name}", id, e);
+        }
+    }
+
+    /// <summary>As <see cref="ReadObjectBytes(uint)"/>, but a damaged chain's message leaves naming the object to the caller.</summary>
     internal byte[]? ReadObjectBytesUnnamed(uint id)
     {
         if (!TryGetEntry(id, out var entry)) return null;
-        if (entry.Size > int.MaxValue)
-            throw new DatFormatException($"the directory gives it {entry.Size} bytes, more than any object holds");
-        return ReadChain(entry.Offset, (int)entry.Size, "its block chain");
+        return ReadChain(entry.Offset, CheckedSize(entry), "its block chain");
     }
+
+    private static int CheckedSize(DatDirectoryEntry entry) => entry.Size <= int.MaxValue ? (int)entry.Size
+        : throw new DatFormatException($"the directory gives it {entry.Size} bytes, more than any object holds");
 
     /// <summary>
     /// What reading damaged bytes can throw (bounds, overflow, end of stream, allocation, bad arguments);
@@ -133,14 +153,16 @@ public sealed class DatArchive : IDisposable
     /// read beyond the first <see cref="UpFrontBlocks"/>: a size a corrupt directory inflates cannot allocate
     /// more than the file holds.
     /// </summary>
-    private byte[] ReadChain(int start, int size, string what)
+    /// <param name="reuse">A buffer to fill when it is large enough; the result is then that buffer, longer than <paramref name="size"/>.</param>
+    private byte[] ReadChain(int start, int size, string what, byte[]? reuse = null)
     {
         var blockSize = Header.BlockSize;
         var payload = blockSize - 4;
         var maxBlocks = Length / blockSize + 1;
         if (size > maxBlocks * payload)
             throw new DatFormatException($"{what} would hold {size} bytes, more than the {Length}-byte file can");
-        var buffer = new byte[Math.Min(size, UpFrontBlocks * payload)];
+        var upFront = Math.Min(size, UpFrontBlocks * payload);
+        var buffer = reuse is not null && reuse.Length >= upFront ? reuse : new byte[upFront];
         var filled = 0;
         var block = start;
         HashSet<int>? visited = null;
