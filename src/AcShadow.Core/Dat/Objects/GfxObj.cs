@@ -42,11 +42,12 @@ public sealed record GfxObj(
             vertices[key] = origin;
         }
 
-        var physicsPolygons = new List<KeyValuePair<ushort, Polygon>>();
+        List<KeyValuePair<ushort, Polygon>> physicsPolygons = [];
         PhysicsBspNode? bsp = null;
         if (flags.HasFlag(GfxObjFlags.HasPhysics))
         {
             var polyCount = r.ReadCount(r.ReadCompressedUInt32(), 12, "physics polygon");
+            physicsPolygons = new(polyCount);
             for (var i = 0; i < polyCount; i++)
             {
                 var key = r.ReadUInt16();
