@@ -25,7 +25,7 @@ public sealed class VersionAction : SynchronousCommandLineAction
         return $"acshadow {version}{(commit is null ? "" : $" (commit {commit[..Math.Min(7, commit.Length)]})")}\n" +
                $"dat layer: in-house {datLayer.Name} {datLayer.Version} (Dat/, behind IDatSource); Chorizite.DatReaderWriter: not used, not available to this build\n" +
                $"formats: {string.Join(", ", FileFormats.All.Select(f => f.Format))}\n" +
-               $"runtime: .NET {Environment.Version}\n";
+               $"runtime: .NET {Environment.Version}{(System.Runtime.CompilerServices.RuntimeFeature.IsDynamicCodeSupported ? "" : " (Native AOT)")}\n";
     }
 
     public override int Invoke(ParseResult parseResult)

@@ -30,7 +30,7 @@ public static class DatLocator
         try
         {
             var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell);
-            return new OpenedDat(portal, cell, portal.Info.FileName, false);
+            return new OpenedDat(portal, cell, portal.Archive.Name, false);
         }
         catch
         {
@@ -81,9 +81,9 @@ public static class DatLocator
         }
         // The header's data set says which database this is; a swapped pair would otherwise read as empty.
         // Undefined is let through: a dat whose header does not say is tried rather than refused.
-        if (dat.Info.Kind != expectedKind && dat.Info.Kind != DatFileKind.Undefined)
+        var kind = dat.Archive.Header.Kind;
+        if (kind != expectedKind && kind != DatFileKind.Undefined)
         {
-            var kind = dat.Info.Kind;
             dat.Dispose();
             throw new CliException(ExitCodes.DatUnreadable, KindName(kind) is { } name
                 ? $"{source}: {file} is {name} dat, not {KindName(expectedKind)} dat (its header says so): pass {expectedName} there"

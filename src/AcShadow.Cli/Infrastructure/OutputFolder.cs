@@ -92,11 +92,13 @@ public static class OutputFolder
         var temp = target + $".{Environment.ProcessId}{TempSuffix}";
         try
         {
-            Directory.CreateDirectory(Path.GetDirectoryName(target)!);
-            // Not File.WriteAllBytes: it preallocates the length first, and a file the file system cannot
-            // hold then fails as an ArgumentException instead of the write's own I/O error.
-            using (var stream = new FileStream(temp, FileMode.Create, FileAccess.Write, FileShare.None))
-                stream.Write(content);
+            // A handle and one positional write: no stream buffer, no seek, no truncate of a file just
+            // created, no advisory lock (FileShare.Read: the name is this process's own) — a batch writes tens
+            // of thousands of files; each saved call counts. Not
+            // File.WriteAllBytes: it preallocates the length first, and a file the file system cannot hold
+            // then fails as an ArgumentException instead of the write's own I/O error.
+            using (var handle = CreateTemporary(temp))
+                RandomAccess.Write(handle, content, 0);
             File.Move(temp, target, overwrite: true);
             return content.LongLength;
         }
@@ -106,6 +108,28 @@ public static class OutputFolder
             TryDelete(temp);
             throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
         }
+    }
+
+    /// <summary>
+    /// The temporary file, created new (nothing to truncate); its folder is made only when missing (a batch
+    /// writes thousands of files into the same two). One left by an earlier process that had this process's
+    /// id (so it was not cleared as abandoned) is replaced.
+    /// </summary>
+    private static Microsoft.Win32.SafeHandles.SafeFileHandle CreateTemporary(string temp)
+    {
+        try
+        {
+            return File.OpenHandle(temp, FileMode.CreateNew, FileAccess.Write, FileShare.Read);
+        }
+        catch (DirectoryNotFoundException)
+        {
+            Directory.CreateDirectory(Path.GetDirectoryName(temp)!);
+        }
+        catch (IOException) when (File.Exists(temp))
+        {
+            File.Delete(temp);
+        }
+        return File.OpenHandle(temp, FileMode.CreateNew, FileAccess.Write, FileShare.Read);
     }
 
     /// <summary>True when the file already holds exactly these bytes (for --incremental).</summary>

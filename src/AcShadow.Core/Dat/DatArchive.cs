@@ -1,4 +1,7 @@
+using System.Buffers;
 using System.Buffers.Binary;
+using Microsoft.Win32.SafeHandles;
+using System.Collections.Concurrent;
 
 namespace AcShadow.Core.Dat;
 
@@ -6,6 +9,10 @@ namespace AcShadow.Core.Dat;
 /// The container layer of a dat file: header, B-tree directory and block chains. Each block starts
 /// with a 4-byte offset of the next block; the rest of the block is object data. Reads are serialised
 /// on the stream the caller hands in, so one archive may be shared by many threads.
+/// The directory is read as it is needed: a lookup before anything asked for the whole list searches the
+/// B-tree from the root (a few nodes, so one `dump` costs the same on a 1 MB and a 200 MB dat); the first
+/// call for the whole list (<see cref="Entries"/>, <see cref="MaxIteration"/>) walks and checks every node,
+/// and lookups use that list from then on.
 /// </summary>
 public sealed class DatArchive : IDisposable
 {
@@ -16,21 +23,23 @@ public sealed class DatArchive : IDisposable
     private const int UpFrontBlocks = 1024;
 
     private readonly Stream _stream;
+    private readonly SafeFileHandle? _file;
     private readonly bool _ownsStream;
     private readonly object _gate = new();
-    private readonly DatDirectoryEntry[] _entries;
-    private readonly Dictionary<uint, int> _indexById;
+    private readonly Lazy<Directory> _directory;
+    private readonly ConcurrentDictionary<int, DatBTreeNode> _searchedNodes = new();
 
     public string Name { get; }
     public DatHeader Header { get; }
     public long Length { get; }
 
     /// <summary>All directory entries, sorted by id.</summary>
-    public IReadOnlyList<DatDirectoryEntry> Entries => _entries;
+    public IReadOnlyList<DatDirectoryEntry> Entries => _directory.Value.Entries;
 
     private DatArchive(Stream stream, bool ownsStream, string name)
     {
         _stream = stream;
+        _file = stream is FileStream { CanSeek: true } fileStream ? fileStream.SafeFileHandle : null;
         _ownsStream = ownsStream;
         Name = name;
         Length = stream.Length;
@@ -38,9 +47,15 @@ public sealed class DatArchive : IDisposable
             throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
         var headerBytes = ReadRaw(0, DatHeader.Size);
         Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
-        _entries = ReadDirectory();
-        _indexById = new Dictionary<uint, int>(_entries.Length);
-        for (var i = 0; i < _entries.Length; i++) _indexById[_entries[i].Id] = i;
+        _directory = new Lazy<Directory>(() => new Directory(ReadDirectory()), LazyThreadSafetyMode.ExecutionAndPublication);
+        if (Header.RootBlock != 0) Node(Header.RootBlock);
+    }
+
+    /// <summary>Every entry, sorted by id, and where each id sits in that list.</summary>
+    private sealed class Directory(DatDirectoryEntry[] entries)
+    {
+        public DatDirectoryEntry[] Entries { get; } = entries;
+        public Dictionary<uint, int> IndexById { get; } = entries.Select((e, i) => (e.Id, i)).ToDictionary(p => p.Id, p => p.i);
     }
 
     /// <summary>Opens a dat from a readable, seekable stream.</summary>
@@ -60,13 +75,57 @@ public sealed class DatArchive : IDisposable
         }
     }
 
-    public bool Contains(uint id) => _indexById.ContainsKey(id);
+    public bool Contains(uint id) => TryGetEntry(id, out _);
 
     public bool TryGetEntry(uint id, out DatDirectoryEntry entry)
     {
-        if (_indexById.TryGetValue(id, out var i)) { entry = _entries[i]; return true; }
+        if (_directory.IsValueCreated)
+        {
+            var directory = _directory.Value;
+            if (directory.IndexById.TryGetValue(id, out var i)) { entry = directory.Entries[i]; return true; }
+            entry = default;
+            return false;
+        }
+        return TrySearch(id, out entry);
+    }
+
+    /// <summary>
+    /// A B-tree search: in each node the entries are sorted by id and branch i holds the ids between
+    /// entries i-1 and i. Nodes read on the way are kept (the root and upper levels serve every lookup).
+    /// </summary>
+    private bool TrySearch(uint id, out DatDirectoryEntry entry)
+    {
         entry = default;
-        return false;
+        var offset = Header.RootBlock;
+        if (offset == 0) return false;
+        for (var depth = 0; ; depth++)
+        {
+            // Read through an object lookup, which names the dat file itself: these messages do not repeat it.
+            if (depth > MaxDepth) throw new DatFormatException($"the directory's B-tree is deeper than {MaxDepth} levels (a cycle?)");
+            var node = Node(offset);
+            int low = 0, high = node.Entries.Count - 1;
+            while (low <= high)
+            {
+                var mid = (low + high) >>> 1;
+                var at = node.Entries[mid].Id;
+                if (at == id) { entry = node.Entries[mid]; return true; }
+                if (at < id) low = mid + 1; else high = mid - 1;
+            }
+            if (node.IsLeaf) return false;
+            var parent = offset;
+            offset = node.Branches[low];
+            if (offset == 0) throw new DatFormatException($"B-tree node 0x{parent:X8} has no branch {low} though it is not a leaf");
+        }
+    }
+
+    private const int MaxDepth = 32;
+
+    private DatBTreeNode Node(int offset) => _searchedNodes.GetOrAdd(offset, ReadNode);
+
+    private DatBTreeNode ReadNode(int offset)
+    {
+        var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
+        return DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
     }
 
     /// <summary>
@@ -122,7 +181,7 @@ public sealed class DatArchive : IDisposable
         e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException);
 
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
-    public int MaxIteration => _entries.Length == 0 ? 0 : _entries.Max(e => e.Iteration);
+    public int MaxIteration => Entries.Count == 0 ? 0 : Entries.Max(e => e.Iteration);
 
     private DatDirectoryEntry[] ReadDirectory()
     {
@@ -138,10 +197,9 @@ public sealed class DatArchive : IDisposable
 
         void Walk(int offset, int depth)
         {
-            if (depth > 32) throw new DatFormatException($"{Name}: B-tree deeper than 32 levels (cycle?)");
+            if (depth > MaxDepth) throw new DatFormatException($"{Name}: B-tree deeper than {MaxDepth} levels (cycle?)");
             if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
-            var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
-            var node = DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
+            var node = _searchedNodes.TryGetValue(offset, out var searched) ? searched : ReadNode(offset);
             result.AddRange(node.Entries);
             foreach (var child in node.Branches) Walk(child, depth + 1);
         }
@@ -151,7 +209,8 @@ public sealed class DatArchive : IDisposable
     /// Follows a block chain for <paramref name="size"/> bytes. A chain visits each block at most once (a
     /// cycle is refused, not read round again as data), and the buffer grows with the blocks actually
     /// read beyond the first <see cref="UpFrontBlocks"/>: a size a corrupt directory inflates cannot allocate
-    /// more than the file holds.
+    /// more than the file holds. Blocks are read a contiguous run at a time (a chain's blocks usually follow
+    /// one another), so an object costs one read, not two a block.
     /// </summary>
     /// <param name="reuse">A buffer to fill when it is large enough; the result is then that buffer, longer than <paramref name="size"/>.</param>
     private byte[] ReadChain(int start, int size, string what, byte[]? reuse = null)
@@ -166,41 +225,74 @@ public sealed class DatArchive : IDisposable
         var filled = 0;
         var block = start;
         HashSet<int>? visited = null;
-        Span<byte> link = stackalloc byte[4];
-        lock (_gate)
+        var run = ArrayPool<byte>.Shared.Rent(Math.Min(RunBytes, ((size + payload - 1) / payload + 1) * blockSize));
+        try
         {
+            long runStart = 0;
+            var runLength = 0;
             while (filled < size)
             {
                 if (block <= 0 || block + 4L > Length)
                     throw new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file");
                 if (filled > 0 && !(visited ??= [start]).Add(block))
                     throw new DatFormatException($"{what} loops back to block 0x{block:X8}");
-                ReadRawLocked(block, link);
-                var next = BinaryPrimitives.ReadInt32LittleEndian(link);
                 var take = Math.Min(payload, size - filled);
                 if (block + 4L + take > Length)
                     throw new DatFormatException($"{what} runs past the end of the file");
+                if (block < runStart || block + 4L + take > runStart + runLength)
+                {
+                    // As much of the rest of the chain as the run holds, were its blocks contiguous.
+                    var rest = ((long)(size - filled) + payload - 1) / payload * blockSize;
+                    runLength = (int)Math.Min(Math.Min(run.Length, rest), Length - block);
+                    runStart = block;
+                    ReadAt(runStart, run.AsSpan(0, runLength));
+                }
+                var at = (int)(block - runStart);
+                var next = BinaryPrimitives.ReadInt32LittleEndian(run.AsSpan(at, 4));
                 if (filled + take > buffer.Length) Array.Resize(ref buffer, (int)Math.Min(size, Math.Max(2L * buffer.Length, filled + take)));
-                ReadRawLocked(block + 4, buffer.AsSpan(filled, take));
+                run.AsSpan(at + 4, take).CopyTo(buffer.AsSpan(filled));
                 filled += take;
                 block = next & 0x7FFFFFFF;
             }
         }
+        finally
+        {
+            ArrayPool<byte>.Shared.Return(run);
+        }
         return buffer;
     }
+
+    private const int RunBytes = 256 * 1024;
 
     private byte[] ReadRaw(long offset, int count)
     {
         var bytes = new byte[count];
-        lock (_gate) ReadRawLocked(offset, bytes);
+        ReadAt(offset, bytes);
         return bytes;
     }
 
-    /// <summary>Straight into the caller's span: a chain's blocks land in the object's buffer, no array per block.</summary>
-    private void ReadRawLocked(long offset, Span<byte> into)
+    /// <summary>
+    /// Positional reads: on a file, straight from its handle, so threads read in parallel (a shared stream
+    /// position would serialise them and thrash the stream's buffer); any other stream under the lock.
+    /// </summary>
+    private void ReadAt(long offset, Span<byte> into)
     {
-        _stream.Position = offset;
-        _stream.ReadExactly(into);
+        if (_file is { } file)
+        {
+            while (into.Length > 0)
+            {
+                var read = RandomAccess.Read(file, into, offset);
+                if (read == 0) throw new EndOfStreamException($"{Name} ends at {offset}, before the {into.Length} bytes wanted there");
+                into = into[read..];
+                offset += read;
+            }
+            return;
+        }
+        lock (_gate)
+        {
+            _stream.Position = offset;
+            _stream.ReadExactly(into);
+        }
     }
 
     public void Dispose()

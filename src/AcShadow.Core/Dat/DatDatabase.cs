@@ -21,12 +21,15 @@ public sealed class DatDatabase : IDatSource, IDisposable
         if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
         _archive = archive;
         _capacity = cacheCapacity;
-        Info = new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize);
+        // The iteration needs the whole directory: read only when something asks (a dump never does).
+        _info = new Lazy<DatSourceInfo>(() => new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize));
     }
+
+    private readonly Lazy<DatSourceInfo> _info;
 
     public static DatDatabase Open(Stream stream, string name) => new(DatArchive.Open(stream, name));
 
-    public DatSourceInfo Info { get; }
+    public DatSourceInfo Info => _info.Value;
     public DatArchive Archive => _archive;
 
     public Setup? ReadSetup(uint id) => Decode(id, DatObjectKind.Setup, Setup.Read, s => s.Id);

@@ -21,7 +21,7 @@ public sealed class HarnessTests
         const int setups = 60; // at least the 58 door ids, so the door dump has its Setup
         var options = new HarnessOptions(setups, ScaleSpecGenerator.GfxObjsFor(setups), 3, 1, 1,
             Path.Combine(AppContext.BaseDirectory, "acshadow.dll"), Path.Combine(dir.Path, "cache"), Path.Combine(dir.Path, "work"),
-            Path.Combine(dir.Path, "bench.json"), true);
+            Path.Combine(dir.Path, "memory-work"), Path.Combine(dir.Path, "bench.json"), true);
         var log = new StringWriter();
 
         var report = BenchHarness.Run(options, log);
@@ -38,6 +38,11 @@ public sealed class HarnessTests
         foreach (var name in Measured)
             foreach (var size in new[] { "full", "quarter" })
                 Assert.Contains(timings, t => t.GetProperty("name").GetString() == name && t.GetProperty("size").GetString() == size);
+        // The write workloads run on both places; the floor writes nothing.
+        foreach (var output in new[] { "disk", "memory" })
+            foreach (var name in new[] { "naive", "batch" })
+                Assert.Contains(timings, t => t.GetProperty("name").GetString() == name && t.GetProperty("output").GetString() == output);
+        Assert.All(timings.Where(t => t.GetProperty("name").GetString() == "floor"), t => Assert.Equal("none", t.GetProperty("output").GetString()));
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "dump --setup");
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "acshadow --version");
         Assert.All(timings, t =>
@@ -53,9 +58,11 @@ public sealed class HarnessTests
 
         var ratios = root.GetProperty("ratios").EnumerateArray().ToArray();
         Assert.Equal(report.Ratios.Select(r => r.Name), ratios.Select(r => r.GetProperty("name").GetString()));
-        Assert.Equal(11, ratios.Length);
+        Assert.Equal(16, ratios.Length); // five write-workload targets on each of disk and memory, six others
+        Assert.Contains(ratios, r => r.GetProperty("name").GetString()!.EndsWith("(memory)", StringComparison.Ordinal));
         Assert.All(ratios, r => Assert.True(r.GetProperty("value").GetDouble() > 0, r.ToString()));
         Assert.Contains("| Target | Measured | Goal | Met |", log.ToString());
         Assert.False(Directory.Exists(options.WorkDirectory), "the harness leaves no output folders behind");
+        Assert.False(Directory.Exists(options.MemoryWorkDirectory), "nor in its memory-backed work folder");
     }
 }

@@ -92,4 +92,27 @@ public class DatArchiveTests
         Assert.Equal(value < 0x80 ? 1 : value < 0x4000 ? 2 : 4, bytes.Length);
         Assert.Equal(value, new DatBinaryReader(bytes, "test").ReadCompressedUInt32());
     }
+
+    [Fact]
+    public void A_dat_on_disk_reads_the_same_bytes_from_many_threads_at_once()
+    {
+        // A file is read through positional reads without the lock; the same dat from memory through the lock.
+        // Objects up to 300 KB span runs of blocks longer than one positional read holds.
+        var objects = Objects(300, 7, 300_000);
+        var bytes = DatArchiveWriter.Write(objects, new DatArchiveWriter.Options(DatFileKind.Portal, 1024));
+        using var dir = new AcShadow.Tests.Support.TempDir();
+        var path = Path.Combine(dir.Path, "client_portal.dat");
+        File.WriteAllBytes(path, bytes);
+        using var fromFile = DatArchive.Open(new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read, 1 << 16, FileOptions.RandomAccess), "client_portal.dat");
+        var ids = objects.Keys.ToArray();
+        var read = new byte[ids.Length][];
+        Parallel.For(0, ids.Length * 4, new ParallelOptions { MaxDegreeOfParallelism = 8 }, i =>
+        {
+            var content = fromFile.ReadObjectBytes(ids[i % ids.Length]);
+            if (i < ids.Length) read[i] = content!;
+            else Assert.Equal(objects[ids[i % ids.Length]], content);
+        });
+        for (var i = 0; i < ids.Length; i++) Assert.Equal(objects[ids[i]], read[i]);
+        Assert.Contains(objects.Values, o => o.Length > 256 * 1024);
+    }
 }

@@ -179,4 +179,23 @@ public class OutputErrorTests
         Assert.True(File.Exists(live));
         Assert.True(File.Exists(notOurs));
     }
+
+    [Fact]
+    public void A_leftover_temporary_file_under_this_processs_own_id_is_replaced_not_an_error()
+    {
+        // A killed run whose process id this one now has: its temporary file is not "abandoned" (the id is
+        // alive), and the write creates its temporary new, so the leftover must be replaced.
+        using var dir = new TempDir();
+        Directory.CreateDirectory(Path.Combine(dir.Path, "setups"));
+        var shadow = Path.Combine(dir.Path, "setups", "0x020019FF.shadow.json");
+        var leftover = $"{shadow}.{Environment.ProcessId}.tmp";
+        File.WriteAllText(leftover, "{\n  \"form");
+
+        var run = CliRun.Of("dump", "--setup", "0x020019FF", "--out", dir.Path);
+
+        Assert.Equal(0, run.ExitCode);
+        Assert.False(File.Exists(leftover));
+        Assert.StartsWith("{\n  \"format\": \"acshadow.shadow/1\"", File.ReadAllText(shadow));
+        Assert.EndsWith("}\n", File.ReadAllText(shadow));
+    }
 }

@@ -72,13 +72,40 @@ public class CorruptDatTests
     }
 
     [Fact]
-    public void A_b_tree_whose_branch_points_back_at_its_root_is_refused_at_open()
+    public void A_b_tree_whose_branch_points_back_at_its_root_is_refused_by_the_full_walk_and_by_a_lookup()
     {
         var (dat, _) = OneSetupDat();
         var root = BinaryPrimitives.ReadInt32LittleEndian(dat.AsSpan(0x160));
         BinaryPrimitives.WriteInt32LittleEndian(dat.AsSpan(root + 4), root); // branch 0 → the root itself
-        var e = Assert.Throws<DatFormatException>(() => Open(dat));
-        Assert.Contains("reachable twice", e.Message);
+        // The whole directory (batch, audit: anything that lists ids) is checked node by node.
+        using (var db = Open(dat))
+            Assert.Contains("reachable twice", Assert.Throws<DatFormatException>(() => db.ListIds(DatObjectKind.Setup)).Message);
+        // A lookup (dump) searches the tree; an id below the root's first entry takes branch 0, round and
+        // round, until the depth bound stops it with the object named once.
+        using (var db = Open(dat))
+        {
+            var e = Assert.Throws<DatFormatException>(() => db.ReadSetup(0x02000001));
+            Assert.Equal("corrupt dat: Setup 0x02000001 in client_portal.dat: the directory's B-tree is deeper than 32 levels (a cycle?)", e.Message);
+        }
+    }
+
+    [Fact]
+    public void A_lookup_finds_every_entry_the_full_walk_lists_and_nothing_else()
+    {
+        // More entries than two levels hold (61 + 62 x 61), so searches descend through three; every third id.
+        var objects = Enumerable.Range(0, 4000).ToDictionary(i => 0x01000000u + 3u * (uint)i, i => new byte[] { (byte)i, 1, 2, 3 });
+        var bytes = DatArchiveWriter.Write(objects, new DatArchiveWriter.Options(DatFileKind.Portal, BlockSize: 256));
+        using var searched = DatArchive.Open(new MemoryStream(bytes), "client_portal.dat");
+        using var walked = DatArchive.Open(new MemoryStream(bytes), "client_portal.dat");
+        var all = walked.Entries;
+        Assert.Equal(objects.Count, all.Count);
+        foreach (var entry in all)
+        {
+            Assert.True(searched.TryGetEntry(entry.Id, out var found), $"0x{entry.Id:X8} not found by search");
+            Assert.Equal(entry, found);
+        }
+        foreach (var missing in new[] { 0u, 0x00FFFFFFu }.Concat(all.Select(e => e.Id + 1)).Concat(all.Select(e => e.Id + 2)))
+            Assert.False(searched.TryGetEntry(missing, out _), $"0x{missing:X8} found but never written");
     }
 
     [Fact]

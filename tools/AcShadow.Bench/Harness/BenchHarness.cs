@@ -17,7 +17,7 @@ public static class BenchHarness
         var started = DateTime.UtcNow;
         var machine = MachineInfo.Current();
         var cores = Environment.ProcessorCount;
-        Directory.CreateDirectory(options.WorkDirectory);
+        foreach (var (_, root) in OutputPlaces(options)) Directory.CreateDirectory(root);
         var full = ScaleDatCache.Get(options.CacheDirectory, options.Setups, options.GfxObjs, options.Seed, log);
         var quarter = ScaleDatCache.Get(options.CacheDirectory, Math.Max(1, options.Setups / 4),
             Math.Max(AcShadow.Forge.ScaleSpecGenerator.MinGfxObjs(Math.Max(1, options.Setups / 4)), options.GfxObjs / 4), options.Seed, log);
@@ -30,44 +30,50 @@ public static class BenchHarness
             {
                 var jobCounts = cores > 1 ? new[] { 1, cores } : [1];
                 foreach (var jobs in jobCounts)
-                    timings.Add(Measure(log, options, "floor", size, jobs, "read and decode every Setup and the GfxObjs its parts name, discard (bench process)",
+                    timings.Add(Measure(log, options, "floor", size, jobs, "none", "read and decode every Setup and the GfxObjs its parts name, discard (bench process)",
                         _ => ProcessRunner.Run(BenchExecutable, ["floor", "--dat", dat.Directory, "--jobs", Text(jobs)])));
-                var naiveOut = Path.Combine(options.WorkDirectory, $"naive-{size}");
-                timings.Add(Measure(log, options, "naive", size, 1, "System.Text.Json reflection defaults, one file per Setup and per BSP GfxObj (bench process)",
-                    _ => { Reset(naiveOut); return ProcessRunner.Run(BenchExecutable, ["naive", "--dat", dat.Directory, "--out", naiveOut]); }));
-                Reset(naiveOut);
-
-                var outputs = new Dictionary<int, string>();
-                foreach (var jobs in jobCounts)
+                foreach (var (output, root) in OutputPlaces(options))
                 {
-                    var outDir = Path.Combine(options.WorkDirectory, $"batch-{size}-j{jobs}");
-                    outputs[jobs] = outDir;
-                    timings.Add(Measure(log, options, "batch", size, jobs, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder",
-                        _ => { Reset(outDir); return ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", outDir, "--jobs", Text(jobs), "--quiet"]); }));
-                }
-                if (cores > 1)
-                    checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({size})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
+                    var naiveOut = Path.Combine(root, $"naive-{size}");
+                    timings.Add(Measure(log, options, "naive", size, 1, output, "System.Text.Json reflection defaults, one file per Setup and per BSP GfxObj (bench process)",
+                        _ => { Reset(naiveOut); return ProcessRunner.Run(BenchExecutable, ["naive", "--dat", dat.Directory, "--out", naiveOut]); }));
+                    Reset(naiveOut);
 
-                var incrementalOut = Path.Combine(options.WorkDirectory, $"incremental-{size}");
-                Reset(incrementalOut);
-                ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"]);
-                timings.Add(Measure(log, options, "batch --incremental", size, cores, "acshadow batch --all --incremental --quiet, nothing changed since the last run",
-                    _ => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"])));
-                checks.Add(new Check($"--incremental output identical to a full run ({size})", OutputComparison.Differences(incrementalOut, outputs[cores], ["incremental.json"])));
-                Reset(incrementalOut);
-                foreach (var dir in outputs.Values) Reset(dir);
+                    var outputs = new Dictionary<int, string>();
+                    foreach (var jobs in jobCounts)
+                    {
+                        var outDir = Path.Combine(root, $"batch-{size}-j{jobs}");
+                        outputs[jobs] = outDir;
+                        timings.Add(Measure(log, options, "batch", size, jobs, output, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder",
+                            _ => { Reset(outDir); return ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", outDir, "--jobs", Text(jobs), "--quiet"]); }));
+                    }
+                    if (cores > 1)
+                        checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({size}, {output})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
+                    if (output == "disk")
+                    {
+                        var incrementalOut = Path.Combine(root, $"incremental-{size}");
+                        Reset(incrementalOut);
+                        ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"]);
+                        timings.Add(Measure(log, options, "batch --incremental", size, cores, output, "acshadow batch --all --incremental --quiet, nothing changed since the last run",
+                            _ => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"])));
+                        checks.Add(new Check($"--incremental output identical to a full run ({size})", OutputComparison.Differences(incrementalOut, outputs[cores], ["incremental.json"])));
+                        Reset(incrementalOut);
+                    }
+                    foreach (var dir in outputs.Values) Reset(dir);
+                }
             }
 
             var dumpOut = Path.Combine(options.WorkDirectory, "dump");
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "whole process",
+            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "none", "whole process",
                 _ => ProcessRunner.Run(options.Cli, ["--version"])));
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup", "full", 1, $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process",
+            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process",
                 _ => ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
             Reset(dumpOut);
         }
         finally
         {
-            try { Directory.Delete(options.WorkDirectory, true); } catch (IOException) { }
+            foreach (var (_, root) in OutputPlaces(options))
+                try { Directory.Delete(root, true); } catch (IOException) { }
         }
 
         log.WriteLine("collision: reference vs brute force on GfxObjs of 200+ polygons (full dat, in-process)");
@@ -83,9 +89,13 @@ public static class BenchHarness
         return report;
     }
 
-    private static Timing Measure(TextWriter log, HarnessOptions options, string name, string size, int jobs, string how, Func<int, ProcessRunner.Outcome> run)
+    /// <summary>The work folder on disk, and the memory-backed one when there is one.</summary>
+    private static IEnumerable<(string Output, string Root)> OutputPlaces(HarnessOptions options) =>
+        options.MemoryWorkDirectory is { } memory ? [("disk", options.WorkDirectory), ("memory", memory)] : [("disk", options.WorkDirectory)];
+
+    private static Timing Measure(TextWriter log, HarnessOptions options, string name, string size, int jobs, string output, string how, Func<int, ProcessRunner.Outcome> run)
     {
-        log.Write($"{name} ({size}, {jobs} job(s)): warm-up");
+        log.Write($"{name} ({size}, {jobs} job(s), output: {output}): warm-up");
         run(-1);
         var seconds = new List<double>();
         var peaks = new List<double>();
@@ -99,15 +109,20 @@ public static class BenchHarness
             log.Write(string.Create(CultureInfo.InvariantCulture, $" {outcome.Seconds:0.000}s"));
         }
         log.WriteLine();
-        return new Timing(name, size, jobs, seconds, peaks, cpu, how);
+        return new Timing(name, size, jobs, seconds, peaks, cpu, how, output);
     }
 
     /// <summary>The bench's own entry assembly, run again as a child process for the floor and naive workloads.</summary>
     private static string BenchExecutable => typeof(BenchHarness).Assembly.Location;
 
+    /// <summary>
+    /// Empties a workload's folder and flushes the file systems, so every timed run starts from the same
+    /// state instead of paying for the previous run's write-back and deletions.
+    /// </summary>
     private static void Reset(string dir)
     {
         if (Directory.Exists(dir)) Directory.Delete(dir, true);
+        if (OperatingSystem.IsLinux() || OperatingSystem.IsMacOS()) ProcessRunner.Run("sync", []);
     }
 
     private static string Text(int n) => n.ToString(CultureInfo.InvariantCulture);

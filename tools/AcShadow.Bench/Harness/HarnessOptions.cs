@@ -16,11 +16,19 @@ public sealed record HarnessOptions(
     string Cli,
     string CacheDirectory,
     string WorkDirectory,
+    string? MemoryWorkDirectory,
     string Output,
     bool Small)
 {
     public const string Usage =
-        "usage: AcShadow.Bench harness --cli PATH [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--out bench.json]";
+        "usage: AcShadow.Bench harness --cli PATH [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--memory-work DIR|none] [--out bench.json]";
+
+    /// <summary>
+    /// Where the write workloads run a second time, on a memory-backed file system, so the table shows the
+    /// tool's own cost beside the disk's: /dev/shm when the machine has it.
+    /// </summary>
+    private static string? DefaultMemoryWork() =>
+        Directory.Exists("/dev/shm") ? Path.Combine("/dev/shm", $"acshadow-bench-{Environment.ProcessId}") : null;
 
     /// <summary>CI size: a few hundred Setups, one repetition; proves the harness works, not the timings.</summary>
     public const int SmallSetups = 200;
@@ -50,6 +58,7 @@ public sealed record HarnessOptions(
             Path.GetFullPath(cli),
             Path.GetFullPath(cache),
             Path.GetFullPath(Value("--work") ?? Path.Combine(Path.GetTempPath(), $"acshadow-bench-{Environment.ProcessId}")),
+            Value("--memory-work") is { } memory ? (memory == "none" ? null : Path.GetFullPath(memory)) : DefaultMemoryWork(),
             Path.GetFullPath(Value("--out") ?? "bench.json"),
             small);
     }

@@ -2,9 +2,10 @@ namespace AcShadow.Bench.Harness;
 
 /// <summary>
 /// Repeated measurements of one thing: wall seconds, peak resident memory (MiB) and CPU seconds (user +
-/// system: on a busy machine it moves less than wall time) per run.
+/// system: on a busy machine it moves less than wall time) per run. <see cref="Output"/> says where the
+/// workload wrote: "disk" (the work folder), "memory" (tmpfs) or "none".
 /// </summary>
-public sealed record Timing(string Name, string Size, int Jobs, IReadOnlyList<double> Seconds, IReadOnlyList<double> PeakMiB, IReadOnlyList<double> CpuSeconds, string How)
+public sealed record Timing(string Name, string Size, int Jobs, IReadOnlyList<double> Seconds, IReadOnlyList<double> PeakMiB, IReadOnlyList<double> CpuSeconds, string How, string Output)
 {
     public double Median => MedianOf(Seconds);
     public double Min => Seconds.Count == 0 ? double.NaN : Seconds.Min();
