@@ -2,6 +2,7 @@ using AcShadow.Bench.Harness;
 using BenchmarkDotNet.Running;
 
 // dotnet run -c Release --project tools/AcShadow.Bench -- harness --cli PATH [--small]   (scripts/bench.sh)
+// dotnet run -c Release --project tools/AcShadow.Bench -- alloc --dat DIR [--jobs N]            (what batch --all allocates)
 // dotnet run -c Release --project tools/AcShadow.Bench -- --filter '*'                   (BenchmarkDotNet)
 switch (args.FirstOrDefault())
 {
@@ -16,6 +17,8 @@ switch (args.FirstOrDefault())
             Console.Error.WriteLine($"bench: {e.Message}");
             return 2;
         }
+    case "alloc":
+        return BatchAllocation.Run(args);
     case "floor" or "naive":
         return Workloads.Run(args);
     default:

@@ -15,21 +15,34 @@ namespace AcShadow.Core.Batch;
 /// still on disk with their recorded sizes, the Setup is not decoded at all.
 /// </summary>
 /// <param name="previous">The last run's state, or null (a full run that still records fingerprints).</param>
-/// <param name="objectBytes">An object's raw bytes in the current dat, or null when absent.</param>
+/// <param name="objectBytes">Reads an object's raw bytes in the current dat into a buffer (see <see cref="ObjectReader"/>).</param>
 /// <param name="isOnDisk">Whether a file of the previous run is still there as recorded.</param>
-public sealed class BatchReuse(IncrementalState? previous, string toolKey, Func<uint, byte[]?> objectBytes, Func<FileEntry, bool> isOnDisk)
+public sealed class BatchReuse(IncrementalState? previous, string toolKey, BatchReuse.ObjectReader objectBytes, Func<FileEntry, bool> isOnDisk)
 {
+    /// <summary>
+    /// An object's raw bytes into <paramref name="buffer"/> (replaced by a larger one when too small): their
+    /// length, or -1 when the dat has no such object. A buffer, not an array per object: every object a batch
+    /// touches is read once more here only to be hashed.
+    /// </summary>
+    public delegate int ObjectReader(uint id, ref byte[] buffer);
+
+    /// <summary>A read buffer larger than this is let go, so a thread keeps at most this much between objects.</summary>
+    private const int MaxKeptBytes = 4 << 20;
+
+    /// <summary>Each thread's read buffer: digests are computed on the worker threads.</summary>
+    [ThreadStatic] private static byte[]? t_buffer;
+
     private readonly Dictionary<uint, IncrementalSetup> _previous =
         previous is not null && previous.Tool == toolKey ? previous.Setups.ToDictionary(s => s.Id) : [];
     /// <summary>Each object's digest, computed once however many Setups share it (32 bytes an object).</summary>
     private readonly ConcurrentDictionary<uint, byte[]> _digests = new();
+    private readonly byte[] _key = Encoding.UTF8.GetBytes(toolKey);
 
     public string Fingerprint(uint setupId, IReadOnlyList<uint> parts)
     {
-        var key = Encoding.UTF8.GetBytes(toolKey);
-        var buffer = new byte[key.Length + (parts.Count + 1) * (4 + SHA256.HashSizeInBytes)];
-        key.CopyTo(buffer, 0);
-        var length = key.Length;
+        var buffer = new byte[_key.Length + (parts.Count + 1) * (4 + SHA256.HashSizeInBytes)];
+        _key.CopyTo(buffer, 0);
+        var length = _key.Length;
         void Add(uint id)
         {
             BinaryPrimitives.WriteUInt32LittleEndian(buffer.AsSpan(length), id);
@@ -41,7 +54,13 @@ public sealed class BatchReuse(IncrementalState? previous, string toolKey, Func<
         return Convert.ToHexStringLower(SHA256.HashData(buffer.AsSpan(0, length))[..16]);
     }
 
-    private byte[] Digest(uint id) => _digests.GetOrAdd(id, key => objectBytes(key) is { } bytes ? SHA256.HashData(bytes) : new byte[SHA256.HashSizeInBytes]);
+    private byte[] Digest(uint id) => _digests.GetOrAdd(id, static (key, read) =>
+    {
+        var buffer = t_buffer ?? new byte[64 * 1024];
+        var length = read(key, ref buffer);
+        t_buffer = buffer.Length <= MaxKeptBytes ? buffer : null;
+        return length < 0 ? new byte[SHA256.HashSizeInBytes] : SHA256.HashData(buffer.AsSpan(0, length));
+    }, objectBytes);
 
     /// <summary>The previous outcome when nothing it depends on changed and its files are intact; else null.</summary>
     public SetupOutcome? TryReuse(uint setupId)

@@ -22,34 +22,45 @@ public static class BspExtractor
     {
         if (!gfx.HasPhysics || gfx.PhysicsBsp is null) return null;
         var diagnostics = new List<string>();
-        var polygons = new List<BspPolygon>();
-        var usedVertices = new SortedSet<int>();
+        var polygons = new List<BspPolygon>(gfx.PhysicsPolygons.Count);
+        var usedVertices = new List<int>();
         var degenerate = new List<int>();
         var nonPlanar = new List<int>();
 
-        var nonFinite = gfx.Vertices.Where(kv => !IsFinite(kv.Value)).Select(kv => (int)kv.Key).Order().ToArray();
-        if (nonFinite.Length > 0)
-            diagnostics.Add($"GfxObj 0x{gfx.Id:X8}: vertex id(s) {string.Join(", ", nonFinite)} have NaN or infinite coordinates; left out, so polygons using them get no plane");
-        var unusable = nonFinite.ToHashSet();
+        var unusable = NonFiniteVertices(gfx.Vertices);
+        if (unusable.Count > 0)
+            diagnostics.Add($"GfxObj 0x{gfx.Id:X8}: vertex id(s) {string.Join(", ", unusable.Order())} have NaN or infinite coordinates; left out, so polygons using them get no plane");
 
-        foreach (var (id, poly) in gfx.PhysicsPolygons.OrderBy(p => p.Key))
+        // One list of the polygon's usable points, refilled per polygon (the plane code only reads it).
+        var points = new List<Vector3>();
+        foreach (var (id, poly) in InIdOrder(gfx.PhysicsPolygons))
         {
-            var ids = poly.VertexIds.Select(v => (int)v).ToArray();
-            var points = new List<Vector3>(ids.Length);
-            var absent = ids.Where(v => !gfx.Vertices.ContainsKey((ushort)v)).ToArray();
-            if (absent.Length > 0)
-                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} polygon {id}: vertex id(s) {string.Join(", ", absent)} not in the vertex array");
-            var missing = ids.Where(v => !gfx.Vertices.ContainsKey((ushort)v) || unusable.Contains(v)).ToArray();
+            var ids = new int[poly.VertexIds.Count];
+            for (var i = 0; i < ids.Length; i++) ids[i] = poly.VertexIds[i];
+            points.Clear();
+            var missing = false;
+            List<int>? absent = null;
             foreach (var v in ids)
-                if (!unusable.Contains(v) && gfx.Vertices.TryGetValue((ushort)v, out var p)) { points.Add(p); usedVertices.Add(v); }
+            {
+                if (!gfx.Vertices.TryGetValue((ushort)v, out var p)) (absent ??= []).Add(v);
+                else if (!unusable.Contains(v))
+                {
+                    points.Add(p);
+                    usedVertices.Add(v);
+                    continue;
+                }
+                missing = true;
+            }
+            if (absent is not null)
+                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} polygon {id}: vertex id(s) {string.Join(", ", absent)} not in the vertex array");
 
-            Plane? plane = missing.Length == 0 ? PolygonPlane.Compute(points) : null;
+            Plane? plane = missing ? null : PolygonPlane.Compute(points);
             if (ids.Length < 3)
                 diagnostics.Add($"GfxObj 0x{gfx.Id:X8} polygon {id}: {ids.Length} vertices, a polygon needs 3");
             if (plane is null)
             {
                 degenerate.Add(id);
-                if (missing.Length == 0 && ids.Length >= 3)
+                if (!missing && ids.Length >= 3)
                     diagnostics.Add($"GfxObj 0x{gfx.Id:X8} polygon {id}: degenerate (collinear or repeated vertices), no plane");
             }
             else
@@ -64,17 +75,17 @@ public static class BspExtractor
             polygons.Add(new BspPolygon(id, ids, plane, poly.SidesType, poly.Stippling));
         }
 
-        var polygonIds = polygons.Select(p => p.Id).ToHashSet();
+        // The polygons are in id order, so membership is a binary search (no set per GfxObj).
+        var polygonIds = new int[polygons.Count];
+        for (var i = 0; i < polygonIds.Length; i++) polygonIds[i] = polygons[i].Id;
         var nodes = new List<BspNode>();
-        var maxDepth = 0;
-        var droppedBelowLimit = 0;
+        int maxDepth = 0, droppedBelowLimit = 0, leafCount = 0, solidLeafCount = 0;
         Flatten(gfx.PhysicsBsp, 0);
         if (droppedBelowLimit > 0)
             diagnostics.Add($"GfxObj 0x{gfx.Id:X8}: the PhysicsBSP is deeper than {BspLimits.MaxDepth} levels, which no real one is; {droppedBelowLimit} subtree(s) below that depth are dropped");
 
-        var vertices = usedVertices.Select(v => new BspVertex(v, gfx.Vertices[(ushort)v])).ToArray();
-        var leaves = nodes.Where(n => n.IsLeaf).ToArray();
-        var stats = new BspStats(vertices.Length, polygons.Count, nodes.Count, leaves.Length, leaves.Count(l => l.Solid), maxDepth, degenerate, nonPlanar);
+        var vertices = Vertices(gfx.Vertices, usedVertices);
+        var stats = new BspStats(vertices.Length, polygons.Count, nodes.Count, leafCount, solidLeafCount, maxDepth, degenerate, nonPlanar);
         return new BspDump(gfx.Id, gfx.PhysicsBsp.BoundingSphere, vertices, polygons, nodes, stats, diagnostics);
 
         int? Flatten(PhysicsBspNode node, int depth)
@@ -91,9 +102,15 @@ public static class BspExtractor
                 diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP node {index}: bounding sphere has NaN or infinite values");
             if (node.IsLeaf)
             {
-                var ids = node.Polygons.Select(p => (int)p).ToArray();
-                foreach (var p in ids.Where(p => !polygonIds.Contains(p)))
-                    diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP leaf {node.LeafIndex}: polygon id {p} is not a physics polygon");
+                var ids = new int[node.Polygons.Count];
+                for (var i = 0; i < ids.Length; i++)
+                {
+                    ids[i] = node.Polygons[i];
+                    if (Array.BinarySearch(polygonIds, ids[i]) < 0)
+                        diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP leaf {node.LeafIndex}: polygon id {ids[i]} is not a physics polygon");
+                }
+                leafCount++;
+                if (node.Solid != 0) solidLeafCount++;
                 nodes[index] = new BspNode(index, node.Type, null, node.BoundingSphere, null, null, node.LeafIndex, node.Solid != 0, ids);
                 return index;
             }
@@ -108,6 +125,37 @@ public static class BspExtractor
             nodes[index] = new BspNode(index, node.Type, splitting, node.BoundingSphere, pos, neg, 0, false, []);
             return index;
         }
+    }
+
+    /// <summary>The ids of vertices with a NaN or infinite coordinate; nearly always none, and then nothing is allocated.</summary>
+    private static IReadOnlySet<int> NonFiniteVertices(IReadOnlyDictionary<ushort, Vector3> vertices)
+    {
+        HashSet<int>? found = null;
+        foreach (var (id, position) in vertices)
+            if (!IsFinite(position)) (found ??= []).Add(id);
+        return found ?? NoVertices;
+    }
+
+    private static readonly HashSet<int> NoVertices = [];
+
+    /// <summary>The dat stores physics polygons in id order; sorting (stably, as before) only when one does not.</summary>
+    private static IEnumerable<KeyValuePair<ushort, Polygon>> InIdOrder(IReadOnlyList<KeyValuePair<ushort, Polygon>> polygons)
+    {
+        for (var i = 1; i < polygons.Count; i++)
+            if (polygons[i].Key < polygons[i - 1].Key) return polygons.OrderBy(p => p.Key);
+        return polygons;
+    }
+
+    /// <summary>Each used vertex once, in id order.</summary>
+    private static BspVertex[] Vertices(IReadOnlyDictionary<ushort, Vector3> positions, List<int> used)
+    {
+        used.Sort();
+        var distinct = 0;
+        for (var i = 0; i < used.Count; i++)
+            if (i == 0 || used[i] != used[i - 1]) used[distinct++] = used[i];
+        var vertices = new BspVertex[distinct];
+        for (var i = 0; i < distinct; i++) vertices[i] = new BspVertex(used[i], positions[(ushort)used[i]]);
+        return vertices;
     }
 
     private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);

@@ -16,6 +16,12 @@ namespace AcShadow.Core.Dat;
 /// </summary>
 public sealed class DatArchive : IDisposable
 {
+    /// <summary>
+    /// An object up to this many blocks gets its exact buffer at once (nearly every object of a real dat);
+    /// only larger ones grow as their chain is read, so growing and copying is rare.
+    /// </summary>
+    private const int UpFrontBlocks = 1024;
+
     private readonly Stream _stream;
     private readonly SafeFileHandle? _file;
     private readonly bool _ownsStream;
@@ -138,14 +144,34 @@ public sealed class DatArchive : IDisposable
         }
     }
 
-    /// <summary>As <see cref="ReadObjectBytes"/>, but a damaged chain's message leaves naming the object to the caller.</summary>
+    /// <summary>
+    /// As <see cref="ReadObjectBytes(uint)"/>, into <paramref name="buffer"/> (replaced by a larger one when too
+    /// small): the object's length, or -1 when the dat has no such id. For callers that only look at each
+    /// object's bytes once (fingerprints), so they reuse one buffer instead of an array per object.
+    /// </summary>
+    public int ReadObjectBytes(uint id, ref byte[] buffer)
+    {
+        try
+        {
+            if (!TryGetEntry(id, out var entry)) return -1;
+            buffer = ReadChain(entry.Offset, CheckedSize(entry), "its block chain", buffer);
+            return (int)entry.Size;
+        }
+        catch (Exception e) when (IsReadFailure(e))
+        {
+            throw DatFormatException.CorruptObject($"object 0x{id:X8} in {Name}", id, e);
+        }
+    }
+
+    /// <summary>As <see cref="ReadObjectBytes(uint)"/>, but a damaged chain's message leaves naming the object to the caller.</summary>
     internal byte[]? ReadObjectBytesUnnamed(uint id)
     {
         if (!TryGetEntry(id, out var entry)) return null;
-        if (entry.Size > int.MaxValue)
-            throw new DatFormatException($"the directory gives it {entry.Size} bytes, more than any object holds");
-        return ReadChain(entry.Offset, (int)entry.Size, "its block chain");
+        return ReadChain(entry.Offset, CheckedSize(entry), "its block chain");
     }
+
+    private static int CheckedSize(DatDirectoryEntry entry) => entry.Size <= int.MaxValue ? (int)entry.Size
+        : throw new DatFormatException($"the directory gives it {entry.Size} bytes, more than any object holds");
 
     /// <summary>
     /// What reading damaged bytes can throw (bounds, overflow, end of stream, allocation, bad arguments);
@@ -182,18 +208,20 @@ public sealed class DatArchive : IDisposable
     /// <summary>
     /// Follows a block chain for <paramref name="size"/> bytes. A chain visits each block at most once (a
     /// cycle is refused, not read round again as data), and the buffer grows with the blocks actually
-    /// read: a size a corrupt directory inflates cannot allocate more than the file holds. Blocks are read
-    /// a contiguous run at a time (a chain's blocks usually follow one another), so an object costs one
-    /// read, not two a block.
+    /// read beyond the first <see cref="UpFrontBlocks"/>: a size a corrupt directory inflates cannot allocate
+    /// more than the file holds. Blocks are read a contiguous run at a time (a chain's blocks usually follow
+    /// one another), so an object costs one read, not two a block.
     /// </summary>
-    private byte[] ReadChain(int start, int size, string what)
+    /// <param name="reuse">A buffer to fill when it is large enough; the result is then that buffer, longer than <paramref name="size"/>.</param>
+    private byte[] ReadChain(int start, int size, string what, byte[]? reuse = null)
     {
         var blockSize = Header.BlockSize;
         var payload = blockSize - 4;
         var maxBlocks = Length / blockSize + 1;
         if (size > maxBlocks * payload)
             throw new DatFormatException($"{what} would hold {size} bytes, more than the {Length}-byte file can");
-        var buffer = new byte[Math.Min(size, 64 * payload)];
+        var upFront = Math.Min(size, UpFrontBlocks * payload);
+        var buffer = reuse is not null && reuse.Length >= upFront ? reuse : new byte[upFront];
         var filled = 0;
         var block = start;
         HashSet<int>? visited = null;

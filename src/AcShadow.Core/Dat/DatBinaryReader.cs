@@ -34,6 +34,9 @@ public sealed class DatBinaryReader(ReadOnlyMemory<byte> data, string? what = nu
     public float ReadSingle() => BinaryPrimitives.ReadSingleLittleEndian(Take(4));
     public byte[] ReadBytes(int count) => Take(count).ToArray();
 
+    /// <summary>Steps over bytes the decoder does not keep (bounds-checked like a read, no copy).</summary>
+    public void Skip(int count) => Take(count);
+
     public Vector3 ReadVector3() => new(ReadSingle(), ReadSingle(), ReadSingle());
 
     /// <summary>Dat quaternions are stored W, X, Y, Z; System.Numerics wants X, Y, Z, W.</summary>

@@ -26,7 +26,7 @@ public sealed record DatHeader(
 
     public static DatHeader Read(DatBinaryReader r)
     {
-        r.ReadBytes(VersionBytes + TransactionBytes);
+        r.Skip(VersionBytes + TransactionBytes);
         var magic = r.ReadInt32();
         if (magic != Magic)
             throw new DatFormatException($"not an Asheron's Call dat file: magic at 0x140 is 0x{magic:X8}, expected 0x{Magic:X8}");

@@ -12,57 +12,56 @@ namespace AcShadow.Core.Json;
 /// </summary>
 public static class BspFileWriter
 {
-    public static byte[] Write(BspDump dump)
+    public static byte[] Write(BspDump dump) => Utf8JsonText.Build(dump, static (t, dump) =>
     {
-        var t = new Utf8JsonText(256 + dump.Polygons.Count * 160 + dump.Nodes.Count * 200 + dump.Vertices.Count * 60);
-        t.Raw("{\n  \"format\": ").String(BspFileFormat.Format)
-            .Raw(",\n  \"gfxObjId\": ").String(JsonIds.Format(dump.GfxObjId))
-            .Raw(",\n  \"boundingSphere\": ");
+        t.Raw("{\n  \"format\": "u8).String(BspFileFormat.Format)
+            .Raw(",\n  \"gfxObjId\": "u8).String(JsonIds.Format(dump.GfxObjId))
+            .Raw(",\n  \"boundingSphere\": "u8);
         WriteSphere(t, dump.BoundingSphere);
-        t.Raw(",\n  \"vertices\": ");
-        Items(t, dump.Vertices, v => t.Raw("{\"id\": ").Int(v.Id).Raw(", \"position\": ").Vector(v.Position).Raw("}"));
-        t.Raw(",\n  \"polygons\": ");
-        Items(t, dump.Polygons, p => Polygon(t, p));
-        t.Raw(",\n  \"nodes\": ");
-        Items(t, dump.Nodes, n => Node(t, n));
+        t.Raw(",\n  \"vertices\": "u8);
+        Items(t, dump.Vertices, static (t, v) => t.Raw("{\"id\": "u8).Int(v.Id).Raw(", \"position\": "u8).Vector(v.Position).Raw("}"u8));
+        t.Raw(",\n  \"polygons\": "u8);
+        Items(t, dump.Polygons, Polygon);
+        t.Raw(",\n  \"nodes\": "u8);
+        Items(t, dump.Nodes, Node);
         var s = dump.Stats;
-        t.Raw(",\n  \"stats\": {\n    \"vertexCount\": ").Int(s.VertexCount)
-            .Raw(",\n    \"polygonCount\": ").Int(s.PolygonCount)
-            .Raw(",\n    \"nodeCount\": ").Int(s.NodeCount)
-            .Raw(",\n    \"leafCount\": ").Int(s.LeafCount)
-            .Raw(",\n    \"solidLeafCount\": ").Int(s.SolidLeafCount)
-            .Raw(",\n    \"maxDepth\": ").Int(s.MaxDepth)
-            .Raw(",\n    \"degeneratePolygons\": ").IntArray(s.DegeneratePolygons)
-            .Raw(",\n    \"nonPlanarPolygons\": ").IntArray(s.NonPlanarPolygons)
-            .Raw("\n  },\n  \"diagnostics\": [");
+        t.Raw(",\n  \"stats\": {\n    \"vertexCount\": "u8).Int(s.VertexCount)
+            .Raw(",\n    \"polygonCount\": "u8).Int(s.PolygonCount)
+            .Raw(",\n    \"nodeCount\": "u8).Int(s.NodeCount)
+            .Raw(",\n    \"leafCount\": "u8).Int(s.LeafCount)
+            .Raw(",\n    \"solidLeafCount\": "u8).Int(s.SolidLeafCount)
+            .Raw(",\n    \"maxDepth\": "u8).Int(s.MaxDepth)
+            .Raw(",\n    \"degeneratePolygons\": "u8).IntArray(s.DegeneratePolygons)
+            .Raw(",\n    \"nonPlanarPolygons\": "u8).IntArray(s.NonPlanarPolygons)
+            .Raw("\n  },\n  \"diagnostics\": ["u8);
         for (var i = 0; i < dump.Diagnostics.Count; i++)
         {
-            if (i > 0) t.Raw(", ");
+            if (i > 0) t.Raw(", "u8);
             t.String(dump.Diagnostics[i]);
         }
-        return t.Raw("]\n}\n").ToArray();
-    }
+        t.Raw("]\n}\n"u8);
+    });
 
     /// <summary>An array of objects: one a line at depth 2, or [] when empty (the canonical layout).</summary>
-    private static void Items<T>(Utf8JsonText t, IReadOnlyList<T> items, Action<T> item)
+    private static void Items<T>(Utf8JsonText t, IReadOnlyList<T> items, Action<Utf8JsonText, T> item)
     {
-        if (items.Count == 0) { t.Raw("[]"); return; }
-        t.Raw("[\n");
+        if (items.Count == 0) { t.Raw("[]"u8); return; }
+        t.Raw("[\n"u8);
         for (var i = 0; i < items.Count; i++)
         {
             t.Indent(2);
-            item(items[i]);
-            t.Raw(i < items.Count - 1 ? ",\n" : "\n");
+            item(t, items[i]);
+            t.Raw(i < items.Count - 1 ? ",\n"u8 : "\n"u8);
         }
-        t.Raw("  ]");
+        t.Raw("  ]"u8);
     }
 
-    private static void WriteSphere(Utf8JsonText t, Sphere s) => t.Raw("{\"center\": ").Vector(s.Center).Raw(", \"radius\": ").Float(s.Radius).Raw("}");
+    private static void WriteSphere(Utf8JsonText t, Sphere s) => t.Raw("{\"center\": "u8).Vector(s.Center).Raw(", \"radius\": "u8).Float(s.Radius).Raw("}"u8);
 
     private static void WritePlane(Utf8JsonText t, Plane? plane)
     {
-        if (plane is { } p) t.Raw("{\"normal\": ").Vector(p.Normal).Raw(", \"d\": ").Float(p.D).Raw("}");
-        else t.Raw("null");
+        if (plane is { } p) t.Raw("{\"normal\": "u8).Vector(p.Normal).Raw(", \"d\": "u8).Float(p.D).Raw("}"u8);
+        else t.Raw("null"u8);
     }
 
     /// <summary>
@@ -73,35 +72,35 @@ public static class BspFileWriter
     {
         if (p.Plane is null && p.VertexIds.Count <= 4)
         {
-            t.Raw("{\"id\": ").Int(p.Id).Raw(", \"vertexIds\": ").IntArray(p.VertexIds).Raw(", \"plane\": null, \"sidesType\": ")
-                .Int((int)p.SidesType).Raw(", \"stippling\": ").Int((int)p.Stippling).Raw("}");
+            t.Raw("{\"id\": "u8).Int(p.Id).Raw(", \"vertexIds\": "u8).IntArray(p.VertexIds).Raw(", \"plane\": null, \"sidesType\": "u8)
+                .Int((int)p.SidesType).Raw(", \"stippling\": "u8).Int((int)p.Stippling).Raw("}"u8);
             return;
         }
-        t.Raw("{\n      \"id\": ").Int(p.Id).Raw(",\n      \"vertexIds\": ").IntArray(p.VertexIds).Raw(",\n      \"plane\": ");
+        t.Raw("{\n      \"id\": "u8).Int(p.Id).Raw(",\n      \"vertexIds\": "u8).IntArray(p.VertexIds).Raw(",\n      \"plane\": "u8);
         WritePlane(t, p.Plane);
-        t.Raw(",\n      \"sidesType\": ").Int((int)p.SidesType).Raw(",\n      \"stippling\": ").Int((int)p.Stippling).Raw("\n    }");
+        t.Raw(",\n      \"sidesType\": "u8).Int((int)p.SidesType).Raw(",\n      \"stippling\": "u8).Int((int)p.Stippling).Raw("\n    }"u8);
     }
 
     private static void Node(Utf8JsonText t, BspNode n)
     {
-        t.Raw("{\n      \"index\": ").Int(n.Index).Raw(",\n      \"type\": ").String(n.Type.Tag());
+        t.Raw("{\n      \"index\": "u8).Int(n.Index).Raw(",\n      \"type\": "u8).String(n.Type.Tag(stackalloc char[4]));
         if (n.IsLeaf)
         {
-            t.Raw(",\n      \"sphere\": ");
+            t.Raw(",\n      \"sphere\": "u8);
             WriteSphere(t, n.Sphere);
-            t.Raw(",\n      \"leafIndex\": ").Int(n.LeafIndex).Raw(",\n      \"solid\": ").Raw(n.Solid ? "true" : "false")
-                .Raw(",\n      \"polygons\": ").IntArray(n.PolygonIds).Raw("\n    }");
+            t.Raw(",\n      \"leafIndex\": "u8).Int(n.LeafIndex).Raw(",\n      \"solid\": "u8).Raw(n.Solid ? "true"u8 : "false"u8)
+                .Raw(",\n      \"polygons\": "u8).IntArray(n.PolygonIds).Raw("\n    }"u8);
             return;
         }
-        t.Raw(",\n      \"plane\": ");
+        t.Raw(",\n      \"plane\": "u8);
         WritePlane(t, n.Plane);
-        t.Raw(",\n      \"sphere\": ");
+        t.Raw(",\n      \"sphere\": "u8);
         WriteSphere(t, n.Sphere);
-        t.Raw(",\n      \"pos\": ");
-        if (n.Pos is { } pos) t.Int(pos); else t.Raw("null");
-        t.Raw(",\n      \"neg\": ");
-        if (n.Neg is { } neg) t.Int(neg); else t.Raw("null");
-        t.Raw("\n    }");
+        t.Raw(",\n      \"pos\": "u8);
+        if (n.Pos is { } pos) t.Int(pos); else t.Raw("null"u8);
+        t.Raw(",\n      \"neg\": "u8);
+        if (n.Neg is { } neg) t.Int(neg); else t.Raw("null"u8);
+        t.Raw("\n    }"u8);
     }
 
     public static JsonObj ToJson(BspDump dump)

@@ -11,100 +11,83 @@ public static class CanonicalJsonWriter
 {
     private const int MaxInlineMembers = 5;
 
-    public static string Write(JsonNode root)
+    /// <summary>The canonical text: the characters of <see cref="WriteUtf8"/>'s bytes.</summary>
+    public static string Write(JsonNode root) => Encoding.UTF8.GetString(WriteUtf8(root));
+
+    /// <summary>Straight to UTF-8 in the thread's reused buffer (no StringBuilder, no intermediate string).</summary>
+    public static byte[] WriteUtf8(JsonNode root) => Utf8JsonText.Build(root, static (t, root) =>
     {
-        var sb = new StringBuilder();
-        WriteNode(sb, root, 0);
-        sb.Append('\n');
-        return sb.ToString();
-    }
+        WriteNode(t, root, 0);
+        t.Raw("\n"u8);
+    });
 
-    public static byte[] WriteUtf8(JsonNode root) => new UTF8Encoding(false).GetBytes(Write(root));
-
-    private static void WriteNode(StringBuilder sb, JsonNode node, int indent)
+    private static void WriteNode(Utf8JsonText t, JsonNode node, int indent)
     {
         switch (node)
         {
-            case JsonObj obj when obj.Members.Count == 0: sb.Append("{}"); break;
+            case JsonObj obj when obj.Members.Count == 0: t.Raw("{}"u8); break;
             case JsonObj obj when IsInline(obj):
-                sb.Append('{');
+                t.Raw("{"u8);
                 for (var i = 0; i < obj.Members.Count; i++)
                 {
-                    if (i > 0) sb.Append(", ");
-                    WriteString(sb, obj.Members[i].Key);
-                    sb.Append(": ");
-                    WriteNode(sb, obj.Members[i].Value, indent);
+                    if (i > 0) t.Raw(", "u8);
+                    t.String(obj.Members[i].Key).Raw(": "u8);
+                    WriteNode(t, obj.Members[i].Value, indent);
                 }
-                sb.Append('}');
+                t.Raw("}"u8);
                 break;
             case JsonObj obj:
-                sb.Append("{\n");
+                t.Raw("{\n"u8);
                 for (var i = 0; i < obj.Members.Count; i++)
                 {
-                    Indent(sb, indent + 1);
-                    WriteString(sb, obj.Members[i].Key);
-                    sb.Append(": ");
-                    WriteNode(sb, obj.Members[i].Value, indent + 1);
-                    sb.Append(i < obj.Members.Count - 1 ? ",\n" : "\n");
+                    t.Indent(indent + 1).String(obj.Members[i].Key).Raw(": "u8);
+                    WriteNode(t, obj.Members[i].Value, indent + 1);
+                    t.Raw(i < obj.Members.Count - 1 ? ",\n"u8 : "\n"u8);
                 }
-                Indent(sb, indent);
-                sb.Append('}');
+                t.Indent(indent).Raw("}"u8);
                 break;
-            case JsonArr arr when arr.Items.Count == 0: sb.Append("[]"); break;
-            case JsonArr arr when arr.Items.All(IsScalar):
-                sb.Append('[');
+            case JsonArr arr when arr.Items.Count == 0: t.Raw("[]"u8); break;
+            case JsonArr arr when AllScalar(arr):
+                t.Raw("["u8);
                 for (var i = 0; i < arr.Items.Count; i++)
                 {
-                    if (i > 0) sb.Append(", ");
-                    WriteNode(sb, arr.Items[i], indent);
+                    if (i > 0) t.Raw(", "u8);
+                    WriteNode(t, arr.Items[i], indent);
                 }
-                sb.Append(']');
+                t.Raw("]"u8);
                 break;
             case JsonArr arr:
-                sb.Append("[\n");
+                t.Raw("[\n"u8);
                 for (var i = 0; i < arr.Items.Count; i++)
                 {
-                    Indent(sb, indent + 1);
-                    WriteNode(sb, arr.Items[i], indent + 1);
-                    sb.Append(i < arr.Items.Count - 1 ? ",\n" : "\n");
+                    t.Indent(indent + 1);
+                    WriteNode(t, arr.Items[i], indent + 1);
+                    t.Raw(i < arr.Items.Count - 1 ? ",\n"u8 : "\n"u8);
                 }
-                Indent(sb, indent);
-                sb.Append(']');
+                t.Indent(indent).Raw("]"u8);
                 break;
-            case JsonStr s: WriteString(sb, s.Value); break;
-            case JsonNum n: sb.Append(n.Text); break;
-            case JsonBool b: sb.Append(b.Value ? "true" : "false"); break;
-            case JsonNull: sb.Append("null"); break;
+            case JsonStr s: t.String(s.Value); break;
+            case JsonNum n: t.Raw(n.Text); break;
+            case JsonBool b: t.Raw(b.Value ? "true"u8 : "false"u8); break;
+            case JsonNull: t.Raw("null"u8); break;
             default: throw new ArgumentException($"unknown JSON node {node.GetType().Name}");
         }
     }
 
     private static bool IsScalar(JsonNode n) => n is JsonStr or JsonNum or JsonBool or JsonNull;
 
-    private static bool IsInline(JsonObj obj) =>
-        obj.Members.Count <= MaxInlineMembers
-        && obj.Members.All(m => IsScalar(m.Value) || (m.Value is JsonArr a && a.Items.All(IsScalar) && a.Items.Count <= 4));
-
-    private static void Indent(StringBuilder sb, int level) => sb.Append(' ', level * 2);
-
-    private static void WriteString(StringBuilder sb, string s)
+    private static bool AllScalar(JsonArr arr)
     {
-        sb.Append('"');
-        foreach (var c in s)
-        {
-            switch (c)
-            {
-                case '"': sb.Append("\\\""); break;
-                case '\\': sb.Append("\\\\"); break;
-                case '\n': sb.Append("\\n"); break;
-                case '\r': sb.Append("\\r"); break;
-                case '\t': sb.Append("\\t"); break;
-                default:
-                    if (c < 0x20) sb.Append("\\u").Append(((int)c).ToString("x4", System.Globalization.CultureInfo.InvariantCulture));
-                    else sb.Append(c);
-                    break;
-            }
-        }
-        sb.Append('"');
+        foreach (var item in arr.Items)
+            if (!IsScalar(item)) return false;
+        return true;
+    }
+
+    private static bool IsInline(JsonObj obj)
+    {
+        if (obj.Members.Count > MaxInlineMembers) return false;
+        foreach (var (_, value) in obj.Members)
+            if (!IsScalar(value) && !(value is JsonArr a && a.Items.Count <= 4 && AllScalar(a))) return false;
+        return true;
     }
 }

@@ -12,10 +12,37 @@ namespace AcShadow.Core.Json;
 /// </summary>
 public sealed class Utf8JsonText
 {
+    /// <summary>A reused buffer larger than this is let go, so a thread keeps at most this much between files.</summary>
+    private const int MaxKeptBytes = 4 << 20;
+
+    /// <summary>Each thread's spare text for <see cref="Build"/>; null while in use, so a nested build gets its own.</summary>
+    [ThreadStatic] private static Utf8JsonText? t_spare;
+
     private byte[] _buffer;
     private int _length;
 
     public Utf8JsonText(int capacity = 4096) => _buffer = new byte[Math.Max(16, capacity)];
+
+    /// <summary>
+    /// The bytes <paramref name="write"/> lays out, written into this thread's reused buffer: one array per
+    /// file (the result), not a growing buffer and its copy, which for BSP dumps are mostly large-object-heap
+    /// arrays that only a gen2 collection frees.
+    /// </summary>
+    public static byte[] Build<TState>(TState state, Action<Utf8JsonText, TState> write)
+    {
+        var text = t_spare ?? new Utf8JsonText(64 * 1024);
+        t_spare = null;
+        text._length = 0;
+        try
+        {
+            write(text, state);
+            return text.ToArray();
+        }
+        finally
+        {
+            if (text._buffer.Length <= MaxKeptBytes) t_spare = text;
+        }
+    }
 
     public byte[] ToArray() => _buffer.AsSpan(0, _length).ToArray();
 
@@ -24,6 +51,15 @@ public sealed class Utf8JsonText
     {
         Ensure(ascii.Length);
         foreach (var c in ascii) _buffer[_length++] = (byte)c;
+        return this;
+    }
+
+    /// <summary>Punctuation and fixed keys already in UTF-8 (u8 literals): one copy, no per-character loop.</summary>
+    public Utf8JsonText Raw(ReadOnlySpan<byte> utf8)
+    {
+        Ensure(utf8.Length);
+        utf8.CopyTo(_buffer.AsSpan(_length));
+        _length += utf8.Length;
         return this;
     }
 
@@ -53,52 +89,68 @@ public sealed class Utf8JsonText
 
     public Utf8JsonText Float(float value)
     {
-        if (!float.IsFinite(value)) return Raw("null");
-        if (value == 0f) return Raw("0");
+        if (!float.IsFinite(value)) return Raw("null"u8);
+        if (value == 0f) return Raw("0"u8);
         Ensure(32);
         value.TryFormat(_buffer.AsSpan(_length), out var written, "R", CultureInfo.InvariantCulture);
         _length += written;
         return this;
     }
 
-    public Utf8JsonText Vector(Vector3 v) => Raw("[").Float(v.X).Raw(", ").Float(v.Y).Raw(", ").Float(v.Z).Raw("]");
+    public Utf8JsonText Vector(Vector3 v) => Raw("["u8).Float(v.X).Raw(", "u8).Float(v.Y).Raw(", "u8).Float(v.Z).Raw("]"u8);
 
     public Utf8JsonText IntArray(IReadOnlyList<int> values)
     {
-        Raw("[");
+        Raw("["u8);
         for (var i = 0; i < values.Count; i++)
         {
-            if (i > 0) Raw(", ");
+            if (i > 0) Raw(", "u8);
             Int(values[i]);
         }
-        return Raw("]");
+        return Raw("]"u8);
     }
 
     /// <summary>A quoted string with <see cref="CanonicalJsonWriter"/>'s escapes.</summary>
-    public Utf8JsonText String(string s)
+    public Utf8JsonText String(string s) => String(s.AsSpan());
+
+    /// <summary>
+    /// As <see cref="String(string)"/>. The runs between escapes are encoded whole, so a surrogate pair is
+    /// never split (escapes are all ASCII) and a lone surrogate becomes U+FFFD as it does for the whole string.
+    /// </summary>
+    public Utf8JsonText String(ReadOnlySpan<char> s)
     {
-        var escaped = new StringBuilder(s.Length + 2);
-        escaped.Append('"');
-        foreach (var c in s)
+        Raw("\""u8);
+        var start = 0;
+        for (var i = 0; i < s.Length; i++)
         {
+            var c = s[i];
+            if (c >= 0x20 && c != '"' && c != '\\') continue;
+            Plain(s[start..i]);
             switch (c)
             {
-                case '"': escaped.Append("\\\""); break;
-                case '\\': escaped.Append("\\\\"); break;
-                case '\n': escaped.Append("\\n"); break;
-                case '\r': escaped.Append("\\r"); break;
-                case '\t': escaped.Append("\\t"); break;
+                case '"': Raw("\\\""u8); break;
+                case '\\': Raw("\\\\"u8); break;
+                case '\n': Raw("\\n"u8); break;
+                case '\r': Raw("\\r"u8); break;
+                case '\t': Raw("\\t"u8); break;
                 default:
-                    if (c < 0x20) escaped.Append("\\u").Append(((int)c).ToString("x4", CultureInfo.InvariantCulture));
-                    else escaped.Append(c);
+                    Raw("\\u"u8);
+                    Ensure(4);
+                    ((int)c).TryFormat(_buffer.AsSpan(_length), out var written, "x4", CultureInfo.InvariantCulture);
+                    _length += written;
                     break;
             }
+            start = i + 1;
         }
-        escaped.Append('"');
-        var text = escaped.ToString();
-        Ensure(Encoding.UTF8.GetMaxByteCount(text.Length));
-        _length += Encoding.UTF8.GetBytes(text, _buffer.AsSpan(_length));
-        return this;
+        Plain(s[start..]);
+        return Raw("\""u8);
+    }
+
+    private void Plain(ReadOnlySpan<char> run)
+    {
+        if (run.IsEmpty) return;
+        Ensure(Encoding.UTF8.GetMaxByteCount(run.Length));
+        _length += Encoding.UTF8.GetBytes(run, _buffer.AsSpan(_length));
     }
 
     private void Ensure(int more)

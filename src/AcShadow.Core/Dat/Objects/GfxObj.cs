@@ -38,15 +38,16 @@ public sealed record GfxObj(
             var uvCount = r.ReadUInt16();
             var origin = r.ReadVector3();
             r.ReadVector3(); // normal: drawing only
-            r.ReadBytes(uvCount * 8);
+            r.Skip(uvCount * 8);
             vertices[key] = origin;
         }
 
-        var physicsPolygons = new List<KeyValuePair<ushort, Polygon>>();
+        List<KeyValuePair<ushort, Polygon>> physicsPolygons = [];
         PhysicsBspNode? bsp = null;
         if (flags.HasFlag(GfxObjFlags.HasPhysics))
         {
             var polyCount = r.ReadCount(r.ReadCompressedUInt32(), 12, "physics polygon");
+            physicsPolygons = new(polyCount);
             for (var i = 0; i < polyCount; i++)
             {
                 var key = r.ReadUInt16();

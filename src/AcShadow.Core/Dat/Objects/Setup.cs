@@ -78,7 +78,7 @@ public sealed record Setup(
     private static void SkipKeyed(DatBinaryReader r, int valueBytes, string what)
     {
         var count = r.ReadCount((uint)r.ReadInt32(), 4 + valueBytes, what);
-        r.ReadBytes(count * (4 + valueBytes));
+        r.Skip(count * (4 + valueBytes));
     }
 
     public void Write(DatBinaryWriter w)

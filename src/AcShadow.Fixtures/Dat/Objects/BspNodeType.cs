@@ -18,10 +18,17 @@ public enum BspNodeType : uint
 
 public static class BspNodeTypes
 {
-    public static string Tag(this BspNodeType type)
+    public static string Tag(this BspNodeType type) => new(type.Tag(stackalloc char[4]));
+
+    /// <summary>The tag's four characters in <paramref name="chars"/> (a writer's stack space, no string per node).</summary>
+    public static ReadOnlySpan<char> Tag(this BspNodeType type, Span<char> chars)
     {
         var v = (uint)type;
-        return new string([(char)(v >> 24), (char)((v >> 16) & 0xFF), (char)((v >> 8) & 0xFF), (char)(v & 0xFF)]);
+        chars[0] = (char)(v >> 24);
+        chars[1] = (char)((v >> 16) & 0xFF);
+        chars[2] = (char)((v >> 8) & 0xFF);
+        chars[3] = (char)(v & 0xFF);
+        return chars[..4];
     }
 
     public static bool HasPos(this BspNodeType t) => t is BspNodeType.BPnn or BspNodeType.BPIn or BspNodeType.BPIN or BspNodeType.BPnN;

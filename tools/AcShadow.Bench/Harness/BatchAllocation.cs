@@ -1,0 +1,50 @@
+using System.Diagnostics;
+using System.Globalization;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Shapes;
+
+namespace AcShadow.Bench.Harness;
+
+/// <summary>
+/// `alloc --dat DIR [--jobs N]`: what `batch --all` allocates, in process. The CLI's own run (the same
+/// cache capacity, the same non-incremental reuse that still fingerprints) through <see cref="BatchRunner.Stream"/>
+/// with a writer that only counts, so the bytes and collections are the export path's alone.
+/// </summary>
+public static class BatchAllocation
+{
+    public static int Run(IReadOnlyList<string> args)
+    {
+        string Value(string name, string fallback)
+        {
+            var i = args.ToList().IndexOf(name);
+            return i >= 0 && i + 1 < args.Count ? args[i + 1] : fallback;
+        }
+        var jobs = int.Parse(Value("--jobs", "1"), CultureInfo.InvariantCulture);
+        using var portal = Workloads.Open(Value("--dat", ""));
+        var source = new DatDatabase(portal.Archive, cacheCapacity: 256);
+        var options = new ShapeBuildOptions(ShapePolicy.Retail);
+        var selection = new BatchSelection(false, true, null, null);
+        var plan = BatchPlanner.Plan(selection, portal, null, []);
+        var inputs = new BatchInputs(portal.Info, null, options.Policy, options.EntityScale, selection);
+        var reuse = new BatchReuse(null, IncrementalState.ToolKey(options, inputs.Formats), portal.Archive.ReadObjectBytes, _ => false);
+
+        long files = 0, bytes = 0;
+        var gen0 = GC.CollectionCount(0);
+        var gen1 = GC.CollectionCount(1);
+        var gen2 = GC.CollectionCount(2);
+        var pause = GC.GetTotalPauseDuration();
+        var before = GC.GetTotalAllocatedBytes(true);
+        var clock = Stopwatch.StartNew();
+        var summary = BatchRunner.Stream(source, options, plan, inputs, jobs, f =>
+        {
+            Interlocked.Increment(ref files);
+            Interlocked.Add(ref bytes, f.Content.Length);
+        }, reuse);
+        var elapsed = clock.Elapsed;
+        var allocated = GC.GetTotalAllocatedBytes(true) - before;
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"files {files} bytes {bytes} index {summary.IndexJson.Length}\nallocated {allocated:N0} B  gen0 {GC.CollectionCount(0) - gen0} gen1 {GC.CollectionCount(1) - gen1} gen2 {GC.CollectionCount(2) - gen2}  pause {(GC.GetTotalPauseDuration() - pause).TotalMilliseconds:F0} ms  wall {elapsed.TotalSeconds:F2} s"));
+        return 0;
+    }
+}
