@@ -64,9 +64,10 @@ public static class BatchCommand
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         // A second view over the same archive; `dat` owns and disposes the archive.
         var source = new DatDatabase(dat.Portal.Archive, cacheCapacity: 256);
-        var reuse = new BatchReuse(incremental ? ReadState(outDir) : null, IncrementalState.ToolKey(options, formats),
-            dat.Portal.Archive.ReadObjectBytes,
-            file => HasSize(outDir, file));
+        // Fingerprints (every object read again and hashed) only when the state they feed is written.
+        var reuse = incremental
+            ? new BatchReuse(ReadState(outDir), IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HasSize(outDir, file))
+            : null;
 
         int filesWritten = 0, unchanged = 0;
         long written = 0;
