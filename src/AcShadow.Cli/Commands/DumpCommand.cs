@@ -48,8 +48,16 @@ public static class DumpCommand
         long bytes = 0;
         foreach (var file in files)
         {
-            bytes += OutputFolder.WriteAtomically(outDir, file);
-            console.Out.WriteLine($"wrote {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes)");
+            // A file already holding these exact bytes is left alone: no rewrite, its timestamp kept (build
+            // tools and git see no change), and no replace-by-rename for the file system to flush.
+            if (OutputFolder.IsUnchanged(outDir, file.RelativePath, file.Content))
+                console.Out.WriteLine($"unchanged {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes, already these bytes)");
+            else
+            {
+                OutputFolder.WriteAtomically(outDir, file);
+                console.Out.WriteLine($"wrote {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes)");
+            }
+            bytes += file.Content.Length;
         }
         var set = export.Set;
         console.Out.WriteLine(

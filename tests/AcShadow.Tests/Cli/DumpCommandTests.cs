@@ -22,6 +22,30 @@ public class DumpCommandTests
     }
 
     [Fact]
+    public void A_second_dump_leaves_identical_files_alone_and_rewrites_changed_ones()
+    {
+        using var outDir = new TempDir();
+        Assert.Equal(0, CliRun.Of("dump", "--setup", "0x020019FF", "--out", outDir.Path).ExitCode);
+        var shadow = Path.Combine(outDir.Path, "setups/0x020019FF.shadow.json");
+        var bsp = Path.Combine(outDir.Path, "gfxobjs/0x010044B5.bsp.json");
+        var past = new DateTime(2020, 1, 1, 0, 0, 0, DateTimeKind.Utc);
+        File.SetLastWriteTimeUtc(shadow, past);
+        File.SetLastWriteTimeUtc(bsp, past);
+        var good = File.ReadAllText(bsp);
+        File.WriteAllText(bsp, good.Replace("\"stats\"", "\"statz\""));
+        File.SetLastWriteTimeUtc(bsp, past);
+
+        var run = CliRun.Of("dump", "--setup", "0x020019FF", "--out", outDir.Path);
+
+        Assert.Equal(0, run.ExitCode);
+        Assert.Equal(past, File.GetLastWriteTimeUtc(shadow));
+        Assert.Contains($"unchanged {shadow} (", run.Out);
+        Assert.NotEqual(past, File.GetLastWriteTimeUtc(bsp));
+        Assert.Equal(good, File.ReadAllText(bsp));
+        Assert.Contains($"wrote {bsp} (", run.Out);
+    }
+
+    [Fact]
     public void Door_dumps_four_shapes_under_union()
     {
         using var outDir = new TempDir();
