@@ -44,6 +44,7 @@ public sealed class HarnessTests
                 Assert.Contains(timings, t => t.GetProperty("name").GetString() == name && t.GetProperty("output").GetString() == output);
         Assert.All(timings.Where(t => t.GetProperty("name").GetString() == "floor"), t => Assert.Equal("none", t.GetProperty("output").GetString()));
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "dump --setup");
+        Assert.Contains(timings, t => t.GetProperty("name").GetString() == "dump --setup, new folder");
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "acshadow --version");
         Assert.All(timings, t =>
         {
@@ -58,7 +59,7 @@ public sealed class HarnessTests
 
         var ratios = root.GetProperty("ratios").EnumerateArray().ToArray();
         Assert.Equal(report.Ratios.Select(r => r.Name), ratios.Select(r => r.GetProperty("name").GetString()));
-        Assert.Equal(16, ratios.Length); // five write-workload targets on each of disk and memory, six others
+        Assert.Equal(17, ratios.Length); // five write-workload targets on each of disk and memory, seven others
         Assert.Contains(ratios, r => r.GetProperty("name").GetString()!.EndsWith("(memory)", StringComparison.Ordinal));
         Assert.All(ratios, r => Assert.True(r.GetProperty("value").GetDouble() > 0, r.ToString()));
         Assert.Contains("| Target | Measured | Goal | Met |", log.ToString());

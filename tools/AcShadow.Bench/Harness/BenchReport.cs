@@ -52,7 +52,8 @@ public sealed record BenchReport(
         ratios.AddRange(
         [
             new("incremental / full run", Get("batch --incremental", "full", cores).Median / batchN.Median, "<=", 0.5, "--incremental with nothing changed over a full run"),
-            new("dump / --version", Get("dump --setup", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "dump --setup as a whole process over acshadow --version"),
+            new("dump / --version", Get("dump --setup", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "dump --setup as a whole process over acshadow --version, into the folder it wrote before"),
+            new("dump into a new folder / --version", Get("dump --setup, new folder", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "the same, every file created"),
             new($"peak MiB, batch {cores} jobs (full)", batchN.PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all"),
             new("peak MiB, batch 1 job (full)", batch1.PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all --jobs 1"),
             new($"peak full / quarter, batch {cores} jobs", batchN.PeakMedianMiB / Get("batch", "quarter", cores).PeakMedianMiB, "<=", 1.3, "how peak memory grows with the dat"),
