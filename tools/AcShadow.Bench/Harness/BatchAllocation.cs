@@ -8,7 +8,7 @@ namespace AcShadow.Bench.Harness;
 
 /// <summary>
 /// `alloc --dat DIR [--jobs N]`: what `batch --all` allocates, in process. The CLI's own run (the same
-/// cache capacity, the same non-incremental reuse that still fingerprints) through <see cref="BatchRunner.Stream"/>
+/// cache capacity; without --incremental, no fingerprints) through <see cref="BatchRunner.Stream"/>
 /// with a writer that only counts, so the bytes and collections are the export path's alone.
 /// </summary>
 public static class BatchAllocation
@@ -27,7 +27,6 @@ public static class BatchAllocation
         var selection = new BatchSelection(false, true, null, null);
         var plan = BatchPlanner.Plan(selection, portal, null, []);
         var inputs = new BatchInputs(portal.Info, null, options.Policy, options.EntityScale, selection);
-        var reuse = new BatchReuse(null, IncrementalState.ToolKey(options, inputs.Formats), portal.Archive.ReadObjectBytes, _ => false);
 
         long files = 0, bytes = 0;
         var gen0 = GC.CollectionCount(0);
@@ -40,7 +39,7 @@ public static class BatchAllocation
         {
             Interlocked.Increment(ref files);
             Interlocked.Add(ref bytes, f.Content.Length);
-        }, reuse);
+        }, reuse: null);
         var elapsed = clock.Elapsed;
         var allocated = GC.GetTotalAllocatedBytes(true) - before;
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
