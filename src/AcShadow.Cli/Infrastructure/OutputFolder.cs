@@ -92,11 +92,10 @@ public static class OutputFolder
         var temp = target + $".{Environment.ProcessId}{TempSuffix}";
         try
         {
-            // A handle and one positional write: no stream buffer, no seek, no truncate of a file just
-            // created, no advisory lock (FileShare.Read: the name is this process's own) — a batch writes tens
-            // of thousands of files; each saved call counts. Not
-            // File.WriteAllBytes: it preallocates the length first, and a file the file system cannot hold
-            // then fails as an ArgumentException instead of the write's own I/O error.
+            // A handle and one positional write: no stream buffer, seek or truncate of a file just created (a
+            // batch writes tens of thousands; each saved call counts). Not File.WriteAllBytes: it preallocates
+            // the length first, and a file the file system cannot hold then fails as an ArgumentException
+            // instead of the write's own I/O error.
             using (var handle = CreateTemporary(temp))
                 RandomAccess.Write(handle, content, 0);
             File.Move(temp, target, overwrite: true);
