@@ -1,14 +1,15 @@
 using System.Buffers;
 using System.Buffers.Binary;
-using Microsoft.Win32.SafeHandles;
 using System.Collections.Concurrent;
+using Microsoft.Win32.SafeHandles;
 
 namespace AcShadow.Core.Dat;
 
 /// <summary>
 /// The container layer of a dat file: header, B-tree directory and block chains. Each block starts
-/// with a 4-byte offset of the next block; the rest of the block is object data. Reads are serialised
-/// on the stream the caller hands in, so one archive may be shared by many threads.
+/// with a 4-byte offset of the next block; the rest of the block is object data. One archive may be
+/// shared by many threads: a file is read with positional reads on its handle (threads read in parallel),
+/// any other stream under a lock (see <see cref="ReadAt"/>).
 /// The directory is read as it is needed: a lookup before anything asked for the whole list searches the
 /// B-tree from the root (a few nodes, so one `dump` costs the same on a 1 MB and a 200 MB dat); the first
 /// call for the whole list (<see cref="Entries"/>, <see cref="MaxIteration"/>) walks and checks every node,
@@ -26,7 +27,7 @@ public sealed class DatArchive : IDisposable
     private readonly SafeFileHandle? _file;
     private readonly bool _ownsStream;
     private readonly object _gate = new();
-    private readonly Lazy<Directory> _directory;
+    private readonly Lazy<DirectoryIndex> _directory;
     private readonly ConcurrentDictionary<int, DatBTreeNode> _searchedNodes = new();
 
     public string Name { get; }
@@ -47,12 +48,12 @@ public sealed class DatArchive : IDisposable
             throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
         var headerBytes = ReadRaw(0, DatHeader.Size);
         Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
-        _directory = new Lazy<Directory>(() => new Directory(ReadDirectory()), LazyThreadSafetyMode.ExecutionAndPublication);
+        _directory = new Lazy<DirectoryIndex>(() => new DirectoryIndex(ReadDirectory()), LazyThreadSafetyMode.ExecutionAndPublication);
         if (Header.RootBlock != 0) Node(Header.RootBlock);
     }
 
     /// <summary>Every entry, sorted by id, and where each id sits in that list.</summary>
-    private sealed class Directory(DatDirectoryEntry[] entries)
+    private sealed class DirectoryIndex(DatDirectoryEntry[] entries)
     {
         public DatDirectoryEntry[] Entries { get; } = entries;
         public Dictionary<uint, int> IndexById { get; } = entries.Select((e, i) => (e.Id, i)).ToDictionary(p => p.Id, p => p.i);
