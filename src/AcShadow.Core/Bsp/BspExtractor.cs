@@ -75,9 +75,9 @@ public static class BspExtractor
             polygons.Add(new BspPolygon(id, ids, plane, poly.SidesType, poly.Stippling));
         }
 
-        // The polygons are in id order, so membership is a binary search (no set per GfxObj).
-        var polygonIds = new int[polygons.Count];
-        for (var i = 0; i < polygonIds.Length; i++) polygonIds[i] = polygons[i].Id;
+        // Polygon ids are ushort keys: one bit each answers a leaf's membership test.
+        var polygonIds = new ulong[polygons.Count == 0 ? 0 : (polygons[^1].Id >> 6) + 1];
+        foreach (var polygon in polygons) polygonIds[polygon.Id >> 6] |= 1UL << (polygon.Id & 63);
         var nodes = new List<BspNode>();
         int maxDepth = 0, droppedBelowLimit = 0, leafCount = 0, solidLeafCount = 0;
         Flatten(gfx.PhysicsBsp, 0);
@@ -106,7 +106,7 @@ public static class BspExtractor
                 for (var i = 0; i < ids.Length; i++)
                 {
                     ids[i] = node.Polygons[i];
-                    if (Array.BinarySearch(polygonIds, ids[i]) < 0)
+                    if (!Contains(polygonIds, ids[i]))
                         diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP leaf {node.LeafIndex}: polygon id {ids[i]} is not a physics polygon");
                 }
                 leafCount++;
@@ -146,15 +146,52 @@ public static class BspExtractor
         return polygons;
     }
 
+    private static bool Contains(ulong[] bits, int id) =>
+        id >= 0 && (id >> 6) < bits.Length && (bits[id >> 6] & (1UL << (id & 63))) != 0;
+
     /// <summary>Each used vertex once, in id order.</summary>
     private static BspVertex[] Vertices(IReadOnlyDictionary<ushort, Vector3> positions, List<int> used)
     {
+        int min = int.MaxValue, max = -1;
+        foreach (var id in used)
+        {
+            min = Math.Min(min, id);
+            max = Math.Max(max, id);
+        }
+        if (min >= 0) return VerticesByBit(positions, used, max);
         used.Sort();
         var distinct = 0;
         for (var i = 0; i < used.Count; i++)
             if (i == 0 || used[i] != used[i - 1]) used[distinct++] = used[i];
         var vertices = new BspVertex[distinct];
         for (var i = 0; i < distinct; i++) vertices[i] = new BspVertex(used[i], positions[(ushort)used[i]]);
+        return vertices;
+    }
+
+    /// <summary>
+    /// As <see cref="Vertices"/> when every id is 0 or more (the dat's ids are shorts; real ones are never
+    /// negative): a bit per id puts them in order without sorting.
+    /// </summary>
+    private static BspVertex[] VerticesByBit(IReadOnlyDictionary<ushort, Vector3> positions, List<int> used, int max)
+    {
+        Span<ulong> seen = stackalloc ulong[(max >> 6) + 1];
+        var distinct = 0;
+        foreach (var id in used)
+        {
+            ref var word = ref seen[id >> 6];
+            var bit = 1UL << (id & 63);
+            if ((word & bit) != 0) continue;
+            word |= bit;
+            distinct++;
+        }
+        var vertices = new BspVertex[distinct];
+        var n = 0;
+        for (var w = 0; w < seen.Length; w++)
+            for (var bits = seen[w]; bits != 0; bits &= bits - 1)
+            {
+                var id = (w << 6) + BitOperations.TrailingZeroCount(bits);
+                vertices[n++] = new BspVertex(id, positions[(ushort)id]);
+            }
         return vertices;
     }
 

@@ -92,8 +92,7 @@ public sealed class Utf8JsonText
         if (!float.IsFinite(value)) return Raw("null"u8);
         if (value == 0f) return Raw("0"u8);
         Ensure(32);
-        value.TryFormat(_buffer.AsSpan(_length), out var written, "R", CultureInfo.InvariantCulture);
-        _length += written;
+        _length += FloatTextCache.Current.Write(value, _buffer.AsSpan(_length));
         return this;
     }
 
