@@ -71,7 +71,7 @@ public static class BatchCommand
 
         int filesWritten = 0, unchanged = 0;
         long written = 0;
-        void Write(string path, byte[] content)
+        void Write(string path, ReadOnlySpan<byte> content)
         {
             if (incremental && OutputFolder.IsUnchanged(outDir, path, content)) Interlocked.Increment(ref unchanged);
             else
@@ -85,7 +85,7 @@ public static class BatchCommand
         BatchSummary result;
         try
         {
-            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content), reuse, progress.Report);
+            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content.Span), reuse, progress.Report);
         }
         catch (AggregateException e) when (e.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first)
         {
@@ -146,7 +146,7 @@ public static class BatchCommand
         if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
         Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
-        OutputFolder.RefuseForeignFiles(outDir, candidates, listed);
+        OutputFolder.RefuseForeignFiles(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
     }
 
     /// <summary>Whether a file the previous run wrote is still there with the size it recorded.</summary>

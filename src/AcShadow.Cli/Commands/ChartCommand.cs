@@ -107,7 +107,7 @@ public static class ChartCommand
 
         long bytes = 0;
         var files = ChartFiles.Render(report);
-        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
         foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
 
         var chartedSetups = order.Length - unreadable.Count(order.Contains);

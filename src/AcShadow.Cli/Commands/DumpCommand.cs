@@ -50,7 +50,7 @@ public static class DumpCommand
         {
             // A file already holding these exact bytes is left alone: no rewrite, its timestamp kept (build
             // tools and git see no change), and no replace-by-rename for the file system to flush.
-            if (OutputFolder.IsUnchanged(outDir, file.RelativePath, file.Content))
+            if (OutputFolder.IsUnchanged(outDir, file.RelativePath, file.Content.Span))
                 console.Out.WriteLine($"unchanged {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes, already these bytes)");
             else
             {

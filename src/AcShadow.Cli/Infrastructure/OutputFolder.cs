@@ -49,7 +49,7 @@ public static class OutputFolder
     /// (<see cref="OutputOwnership"/>) and that <paramref name="listedAsOurs"/> (the folder's own index.json)
     /// does not list, naming it; a folder where a file belongs is refused the same way.
     /// </summary>
-    public static void RefuseForeignFiles(string root, IEnumerable<(string RelativePath, byte[] Content)> files,
+    public static void RefuseForeignFiles(string root, IEnumerable<(string RelativePath, ReadOnlyMemory<byte> Content)> files,
         IReadOnlySet<string>? listedAsOurs = null, string option = "--out")
     {
         var foreign = new List<string>();
@@ -57,7 +57,7 @@ public static class OutputFolder
         {
             var target = TargetPath(root, relative);
             if (Directory.Exists(target)) foreign.Add($"{target} (a folder)");
-            else if (File.Exists(target) && listedAsOurs?.Contains(relative) != true && !OutputOwnership.IsOurs(ReadHead(target), content))
+            else if (File.Exists(target) && listedAsOurs?.Contains(relative) != true && !OutputOwnership.IsOurs(ReadHead(target), content.Span))
                 foreign.Add(target);
         }
         if (foreign.Count == 0) return;
@@ -84,9 +84,9 @@ public static class OutputFolder
         }
     }
 
-    public static long WriteAtomically(string root, OutputFile file) => WriteAtomically(root, file.RelativePath, file.Content);
+    public static long WriteAtomically(string root, OutputFile file) => WriteAtomically(root, file.RelativePath, file.Content.Span);
 
-    public static long WriteAtomically(string root, string relativePath, byte[] content)
+    public static long WriteAtomically(string root, string relativePath, ReadOnlySpan<byte> content)
     {
         var target = TargetPath(root, relativePath);
         var temp = target + $".{Environment.ProcessId}{TempSuffix}";
@@ -99,7 +99,7 @@ public static class OutputFolder
             using (var handle = CreateTemporary(temp))
                 RandomAccess.Write(handle, content, 0);
             File.Move(temp, target, overwrite: true);
-            return content.LongLength;
+            return content.Length;
         }
         // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException)
@@ -134,12 +134,12 @@ public static class OutputFolder
     }
 
     /// <summary>True when the file already holds exactly these bytes (for --incremental).</summary>
-    public static bool IsUnchanged(string root, string relativePath, byte[] content)
+    public static bool IsUnchanged(string root, string relativePath, ReadOnlySpan<byte> content)
     {
         var target = TargetPath(root, relativePath);
         if (!File.Exists(target)) return false;
         var info = new FileInfo(target);
-        if (info.Length != content.LongLength) return false;
+        if (info.Length != content.Length) return false;
         return File.ReadAllBytes(target).AsSpan().SequenceEqual(content);
     }
 

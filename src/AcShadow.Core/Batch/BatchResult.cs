@@ -18,8 +18,8 @@ public sealed record BatchResult(
     public const string IndexPath = "index.json";
 
     /// <summary>Every file including index.json (last), as written to disk.</summary>
-    public IEnumerable<(string Path, byte[] Content)> AllFiles =>
+    public IEnumerable<(string Path, ReadOnlyMemory<byte> Content)> AllFiles =>
         Files.Select(f => (f.RelativePath, f.Content)).Append((IndexPath, IndexJson));
 
-    public long TotalBytes => Files.Sum(f => f.Content.LongLength) + IndexJson.LongLength;
+    public long TotalBytes => Files.Sum(f => (long)f.Content.Length) + IndexJson.LongLength;
 }

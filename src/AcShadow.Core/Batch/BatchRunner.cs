@@ -21,12 +21,16 @@ public static class BatchRunner
         Action<BatchProgress>? progress = null, CancellationToken cancellation = default)
     {
         var files = new ConcurrentDictionary<string, OutputFile>(StringComparer.Ordinal);
-        var summary = Stream(dat, options, plan, inputs, jobs, f => files.TryAdd(f.RelativePath, f), null, progress, cancellation);
+        // A streamed file's bytes may be lent for the call only: the ones kept are copies.
+        var summary = Stream(dat, options, plan, inputs, jobs, f => files.TryAdd(f.RelativePath, f with { Content = f.Content.ToArray() }), null, progress, cancellation);
         var ordered = files.Values.OrderBy(f => f.RelativePath, StringComparer.Ordinal).ToArray();
         return new BatchResult(ordered, summary.IndexJson, summary.Skipped, summary.SetupsWritten, summary.BspDumps, summary.Scenes, summary.Diagnostics);
     }
 
-    /// <param name="write">Called from worker threads, once per file path, as each file is made.</param>
+    /// <param name="write">
+    /// Called from worker threads, once per file path, as each file is made. A file's bytes may be lent
+    /// (<see cref="OutputFile"/>): write or copy them before returning.
+    /// </param>
     /// <param name="reuse">With --incremental: the previous run's state; a Setup whose inputs are unchanged is not decoded.</param>
     public static BatchSummary Stream(IDatSource dat, ShapeBuildOptions options, BatchPlan plan, BatchInputs inputs, int jobs,
         Action<OutputFile> write, BatchReuse? reuse, Action<BatchProgress>? progress = null, CancellationToken cancellation = default)

@@ -137,7 +137,7 @@ public sealed class DatArchive : IDisposable
     {
         try
         {
-            return ReadObjectBytesUnnamed(id);
+            return TryGetEntry(id, out var entry) ? ReadChain(entry.Offset, CheckedSize(entry), "its block chain") : null;
         }
         catch (Exception e) when (IsReadFailure(e))
         {
@@ -154,9 +154,7 @@ public sealed class DatArchive : IDisposable
     {
         try
         {
-            if (!TryGetEntry(id, out var entry)) return -1;
-            buffer = ReadChain(entry.Offset, CheckedSize(entry), "its block chain", buffer);
-            return (int)entry.Size;
+            return ReadObjectBytesUnnamed(id, ref buffer);
         }
         catch (Exception e) when (IsReadFailure(e))
         {
@@ -164,11 +162,15 @@ public sealed class DatArchive : IDisposable
         }
     }
 
-    /// <summary>As <see cref="ReadObjectBytes(uint)"/>, but a damaged chain's message leaves naming the object to the caller.</summary>
-    internal byte[]? ReadObjectBytesUnnamed(uint id)
+    /// <summary>
+    /// As <see cref="ReadObjectBytes(uint, ref byte[])"/>, but a damaged chain's message leaves naming the
+    /// object to the caller.
+    /// </summary>
+    internal int ReadObjectBytesUnnamed(uint id, ref byte[] buffer)
     {
-        if (!TryGetEntry(id, out var entry)) return null;
-        return ReadChain(entry.Offset, CheckedSize(entry), "its block chain");
+        if (!TryGetEntry(id, out var entry)) return -1;
+        buffer = ReadChain(entry.Offset, CheckedSize(entry), "its block chain", buffer);
+        return (int)entry.Size;
     }
 
     private static int CheckedSize(DatDirectoryEntry entry) => entry.Size <= int.MaxValue ? (int)entry.Size

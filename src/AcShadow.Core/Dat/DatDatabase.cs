@@ -16,6 +16,16 @@ public sealed class DatDatabase : IDatSource, IDisposable
     private readonly ConcurrentQueue<uint> _order = new();
     private readonly int? _capacity;
 
+    /// <summary>
+    /// Each thread's buffer for an object's raw bytes, reused from object to object (decoders copy what
+    /// they keep). A batch reads hundreds of MB of objects; the large ones, each a new array, were
+    /// large-object-heap garbage that only gen2 collections free. Null while in use.
+    /// </summary>
+    [ThreadStatic] private static byte[]? t_objectBytes;
+
+    /// <summary>A buffer grown past this by a huge object is let go rather than kept by the thread.</summary>
+    private const int MaxKeptBytes = 4 << 20;
+
     public DatDatabase(DatArchive archive, int? cacheCapacity = null)
     {
         if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
@@ -46,11 +56,13 @@ public sealed class DatDatabase : IDatSource, IDisposable
         {
             // The IDatSource boundary: whatever damaged bytes make the chain walk or a decoder throw
             // (bounds, overflow, end of stream, a bad tag, a cycle) leaves here as one "corrupt dat" naming the object.
+            var buffer = t_objectBytes ?? [];
+            t_objectBytes = null;
             try
             {
-                var bytes = _archive.ReadObjectBytesUnnamed(id);
-                if (bytes is null) return null;
-                var value = read(new DatBinaryReader(bytes));
+                var size = _archive.ReadObjectBytesUnnamed(id, ref buffer);
+                if (size < 0) return null;
+                var value = read(new DatBinaryReader(buffer.AsMemory(0, size)));
                 // Every object starts with its own id: a mismatch means the directory points at the wrong bytes.
                 if (idOf(value) != id) throw new DatFormatException($"the object's bytes carry id 0x{idOf(value):X8}");
                 return value;
@@ -58,6 +70,10 @@ public sealed class DatDatabase : IDatSource, IDisposable
             catch (Exception e) when (DatArchive.IsReadFailure(e))
             {
                 throw DatFormatException.CorruptObject($"{kind} 0x{id:X8} in {_archive.Name}", id, e);
+            }
+            finally
+            {
+                if (buffer.Length <= MaxKeptBytes) t_objectBytes = buffer;
             }
         }, LazyThreadSafetyMode.ExecutionAndPublication);
         var lazy = _cache.GetOrAdd(id, created);

@@ -12,8 +12,8 @@ namespace AcShadow.Core.Export;
 /// however many Setups share it. Thread-safe.
 /// </summary>
 /// <param name="bspSink">
-/// When given, each BSP dump is handed to it once, as soon as it is made, and the engine keeps only the
-/// entries of the files the sink wrote for it: a batch streams its files and its memory does not grow with
+/// When given, each BSP dump is handed to it once, as soon as it is made, with its bytes lent (valid only
+/// during the call), and the engine keeps only the entries of the files the sink wrote for it: a batch streams its files and its memory does not grow with
 /// the dat. Without it the engine keeps every dump's bytes and <see cref="SetupExport.BspFiles"/> holds them.
 /// </param>
 public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func<OutputFile, IReadOnlyList<FileEntry>>? bspSink = null)
@@ -59,10 +59,12 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
     {
         var dump = ExtractBsp(id);
         if (dump is null) return new BspDumpResult(null, null, [], []);
-        var file = new OutputFile(BspFileFormat.PathFor(id), OutputKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count);
+        var path = BspFileFormat.PathFor(id);
         var diagnostics = dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray();
-        return bspSink is null
-            ? new BspDumpResult(file, file.RelativePath, [], diagnostics)
-            : new BspDumpResult(null, file.RelativePath, bspSink(file), diagnostics);
+        if (bspSink is null)
+            return new BspDumpResult(new OutputFile(path, OutputKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count), path, [], diagnostics);
+        // The sink writes and hashes the dump at once, so its bytes are lent, never copied into an array.
+        var entries = BspFileWriter.Lend(dump, content => bspSink(new OutputFile(path, OutputKind.Bsp, id, content, 0, dump.Polygons.Count)));
+        return new BspDumpResult(null, path, entries, diagnostics);
     }
 }

@@ -9,6 +9,6 @@ namespace AcShadow.Core.Export;
 public sealed record FileEntry(string RelativePath, OutputKind Kind, uint Id, int ShapeCount, int PolygonCount, long Bytes, string Sha256)
 {
     public static FileEntry Of(OutputFile file) =>
-        new(file.RelativePath, file.Kind, file.Id, file.ShapeCount, file.PolygonCount, file.Content.LongLength,
-            Convert.ToHexStringLower(SHA256.HashData(file.Content)));
+        new(file.RelativePath, file.Kind, file.Id, file.ShapeCount, file.PolygonCount, file.Content.Length,
+            Convert.ToHexStringLower(SHA256.HashData(file.Content.Span)));
 }

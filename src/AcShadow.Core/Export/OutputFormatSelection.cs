@@ -22,7 +22,7 @@ public static class OutputFormatSelection
         if (formats.HasFlag(OutputFormats.Canonical)) result.Add(canonical);
         if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == OutputKind.Bsp)
         {
-            var dump = BspFileReader.Read(Encoding.UTF8.GetString(canonical.Content));
+            var dump = BspFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
             result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(canonical.Id), OutputKind.AcdreamGfxObj, canonical.Id,
                 AcdreamGfxObjWriter.Write(dump), 0, AcdreamGfxObjWriter.PolygonCount(dump)));
         }

@@ -12,7 +12,12 @@ namespace AcShadow.Core.Json;
 /// </summary>
 public static class BspFileWriter
 {
-    public static byte[] Write(BspDump dump) => Utf8JsonText.Build(dump, static (t, dump) =>
+    public static byte[] Write(BspDump dump) => Utf8JsonText.Build(dump, Layout);
+
+    /// <summary>The same bytes, lent to <paramref name="use"/> only while it runs (<see cref="Utf8JsonText.Lend"/>).</summary>
+    public static TResult Lend<TResult>(BspDump dump, Func<ReadOnlyMemory<byte>, TResult> use) => Utf8JsonText.Lend(dump, Layout, use);
+
+    private static void Layout(Utf8JsonText t, BspDump dump)
     {
         t.Raw("{\n  \"format\": "u8).String(BspFileFormat.Format)
             .Raw(",\n  \"gfxObjId\": "u8).String(JsonIds.Format(dump.GfxObjId))
@@ -40,7 +45,7 @@ public static class BspFileWriter
             t.String(dump.Diagnostics[i]);
         }
         t.Raw("]\n}\n"u8);
-    });
+    }
 
     /// <summary>An array of objects: one a line at depth 2, or [] when empty (the canonical layout).</summary>
     private static void Items<T>(Utf8JsonText t, IReadOnlyList<T> items, Action<Utf8JsonText, T> item)

@@ -44,6 +44,28 @@ public sealed class Utf8JsonText
         }
     }
 
+    /// <summary>
+    /// As <see cref="Build"/>, but the bytes are lent to <paramref name="use"/> straight from this thread's
+    /// buffer instead of copied into an array of their own; they are valid only until it returns. For a
+    /// batch, which writes and hashes each file at once: its BSP dumps, hundreds of KB each on a retail
+    /// dat, would otherwise each be a new large-object-heap array.
+    /// </summary>
+    public static TResult Lend<TState, TResult>(TState state, Action<Utf8JsonText, TState> write, Func<ReadOnlyMemory<byte>, TResult> use)
+    {
+        var text = t_spare ?? new Utf8JsonText(64 * 1024);
+        t_spare = null;
+        text._length = 0;
+        try
+        {
+            write(text, state);
+            return use(text._buffer.AsMemory(0, text._length));
+        }
+        finally
+        {
+            if (text._buffer.Length <= MaxKeptBytes) t_spare = text;
+        }
+    }
+
     public byte[] ToArray() => _buffer.AsSpan(0, _length).ToArray();
 
     /// <summary>ASCII punctuation and fixed keys, as given.</summary>

@@ -5,7 +5,7 @@ namespace AcShadow.Core.Verify;
 /// <summary>Compares regenerated files with the files of a fixtures folder, both as path → bytes.</summary>
 public static class FixtureComparer
 {
-    public static FixtureComparison Compare(IReadOnlyDictionary<string, byte[]> expected, IReadOnlyDictionary<string, byte[]> actual,
+    public static FixtureComparison Compare(IReadOnlyDictionary<string, ReadOnlyMemory<byte>> expected, IReadOnlyDictionary<string, byte[]> actual,
         IReadOnlyList<string> datDifferences)
     {
         var missing = expected.Keys.Where(p => !actual.ContainsKey(p)).Order(StringComparer.Ordinal).ToArray();
@@ -15,8 +15,8 @@ public static class FixtureComparer
         {
             var old = actual[path];
             var fresh = expected[path];
-            if (old.AsSpan().SequenceEqual(fresh)) continue;
-            changed.Add(new ChangedFile(path, JsonDiff.Compare(old, fresh)));
+            if (old.AsSpan().SequenceEqual(fresh.Span)) continue;
+            changed.Add(new ChangedFile(path, JsonDiff.Compare(old, fresh.ToArray())));
         }
         return new FixtureComparison(missing, extra, changed, datDifferences, expected.Count);
     }
