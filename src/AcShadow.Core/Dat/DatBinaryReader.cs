@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Numerics;
+using System.Runtime.InteropServices;
 
 namespace AcShadow.Core.Dat;
 
@@ -8,20 +9,32 @@ namespace AcShadow.Core.Dat;
 /// Every read is bounds-checked so a truncated object is a <see cref="DatFormatException"/>, never garbage.
 /// <paramref name="what"/> prefixes its messages; leave it null when the caller names the object itself.
 /// </summary>
-public sealed class DatBinaryReader(ReadOnlyMemory<byte> data, string? what = null)
+public sealed class DatBinaryReader
 {
-    private readonly string _prefix = what is null ? "" : what + ": ";
-    private readonly ReadOnlyMemory<byte> _data = data;
+    private readonly string _prefix;
+
+    // The bytes as array, start and length: a span is made per read, and ReadOnlyMemory.Span costs
+    // more than the read itself (a GfxObj is mostly 4-byte reads).
+    private readonly byte[] _array;
+    private readonly int _start;
+    private readonly int _length;
     private int _offset;
 
+    public DatBinaryReader(ReadOnlyMemory<byte> data, string? what = null)
+    {
+        _prefix = what is null ? "" : what + ": ";
+        var segment = MemoryMarshal.TryGetArray(data, out var array) ? array : new ArraySegment<byte>(data.ToArray());
+        (_array, _start, _length) = (segment.Array!, segment.Offset, segment.Count);
+    }
+
     public int Offset => _offset;
-    public int Remaining => _data.Length - _offset;
+    public int Remaining => _length - _offset;
 
     private ReadOnlySpan<byte> Take(int count)
     {
-        if (count < 0 || _offset + count > _data.Length)
+        if ((uint)count > (uint)(_length - _offset))
             throw new DatFormatException($"{_prefix}needs {count} more byte(s) at offset {_offset}, but only {Remaining} remain (truncated or not this object type).");
-        var span = _data.Span.Slice(_offset, count);
+        var span = new ReadOnlySpan<byte>(_array, _start + _offset, count);
         _offset += count;
         return span;
     }

@@ -29,7 +29,10 @@ internal sealed class FloatTextCache
 
     public static FloatTextCache Current => t_current ??= new FloatTextCache();
 
-    /// <summary>Writes the text of <paramref name="value"/> into <paramref name="destination"/> (at least 32 bytes) and returns its length.</summary>
+    /// <summary>
+    /// Writes the text of <paramref name="value"/> into <paramref name="destination"/> (at least 32 bytes)
+    /// and returns its length; bytes past that length may be overwritten.
+    /// </summary>
     public int Write(float value, Span<byte> destination)
     {
         if (!float.IsFinite(value)) return Format(value, destination);
@@ -42,9 +45,9 @@ internal sealed class FloatTextCache
             _keys[slot] = bits;
             _lengths[slot] = (byte)length;
         }
-        var written = _lengths[slot];
-        text[..written].CopyTo(destination);
-        return written;
+        // The whole slot in one 16-byte copy (the caller leaves room); only its length counts.
+        text.CopyTo(destination);
+        return _lengths[slot];
     }
 
     private static int Format(float value, Span<byte> destination)

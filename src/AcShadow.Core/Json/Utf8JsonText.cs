@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Text;
 
 namespace AcShadow.Core.Json;
@@ -76,7 +77,11 @@ public sealed class Utf8JsonText
         return this;
     }
 
-    /// <summary>Punctuation and fixed keys already in UTF-8 (u8 literals): one copy, no per-character loop.</summary>
+    /// <summary>
+    /// Punctuation and fixed keys already in UTF-8 (u8 literals): one copy, no per-character loop. Inlined,
+    /// so a literal's copy is unrolled at its call site (a BSP dump is mostly short literals).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Utf8JsonText Raw(ReadOnlySpan<byte> utf8)
     {
         Ensure(utf8.Length);
@@ -104,6 +109,16 @@ public sealed class Utf8JsonText
     public Utf8JsonText Int(long value)
     {
         Ensure(24);
+        // Ids, counts and indices: nearly all below 10,000, written without the general formatter.
+        if ((ulong)value < 10_000)
+        {
+            var v = (int)value;
+            var digits = v < 10 ? 1 : v < 100 ? 2 : v < 1000 ? 3 : 4;
+            var end = _length + digits;
+            for (var i = end - 1; i >= _length; i--, v /= 10) _buffer[i] = (byte)('0' + v % 10);
+            _length = end;
+            return this;
+        }
         value.TryFormat(_buffer.AsSpan(_length), out var written, default, CultureInfo.InvariantCulture);
         _length += written;
         return this;
@@ -174,9 +189,11 @@ public sealed class Utf8JsonText
         _length += Encoding.UTF8.GetBytes(run, _buffer.AsSpan(_length));
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void Ensure(int more)
     {
-        if (_length + more <= _buffer.Length) return;
-        Array.Resize(ref _buffer, Math.Max(_buffer.Length * 2, _length + more));
+        if (_length + more > _buffer.Length) Grow(more);
     }
+
+    private void Grow(int more) => Array.Resize(ref _buffer, Math.Max(_buffer.Length * 2, _length + more));
 }
