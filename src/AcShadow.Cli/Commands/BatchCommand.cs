@@ -98,7 +98,14 @@ public static class BatchCommand
         // The state for the next --incremental run, then index.json, last: an index on disk only ever
         // describes files already written.
         if (incremental) Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
-        Write(BatchResult.IndexPath, result.IndexJson);
+        if (incremental) Write(BatchResult.IndexPath, result.IndexJson());
+        else
+        {
+            // Streamed to its file: on a retail dat index.json is megabytes, and a buffer for it would be the
+            // run's largest allocation, at its very end.
+            written += OutputFolder.WriteAtomically(outDir, BatchResult.IndexPath, result.WriteIndex);
+            filesWritten++;
+        }
         // Files of Setups reused unseen are unchanged too.
         if (incremental) unchanged = result.Files.Count + 2 - filesWritten;
 

@@ -101,12 +101,42 @@ public static class OutputFolder
             File.Move(temp, target, overwrite: true);
             return content.Length;
         }
-        // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException)
+        catch (Exception e) when (IsWriteFailure(e))
         {
-            TryDelete(temp);
-            throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
+            throw WriteFailed(target, temp, e);
         }
+    }
+
+    /// <summary>As <see cref="WriteAtomically(string, string, ReadOnlySpan{byte})"/>, for content <paramref name="write"/> streams (it writes in large chunks).</summary>
+    public static long WriteAtomically(string root, string relativePath, Action<Stream> write)
+    {
+        var target = TargetPath(root, relativePath);
+        var temp = target + $".{Environment.ProcessId}{TempSuffix}";
+        try
+        {
+            long length;
+            using (var handle = CreateTemporary(temp))
+            using (var stream = new FileStream(handle, FileAccess.Write, bufferSize: 0))
+            {
+                write(stream);
+                length = stream.Position;
+            }
+            File.Move(temp, target, overwrite: true);
+            return length;
+        }
+        catch (Exception e) when (IsWriteFailure(e))
+        {
+            throw WriteFailed(target, temp, e);
+        }
+    }
+
+    // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
+    private static bool IsWriteFailure(Exception e) => e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException;
+
+    private static CliException WriteFailed(string target, string temp, Exception e)
+    {
+        TryDelete(temp);
+        return new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
     }
 
     /// <summary>

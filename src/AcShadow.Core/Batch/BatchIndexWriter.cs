@@ -12,21 +12,35 @@ namespace AcShadow.Core.Batch;
 /// </summary>
 public static class BatchIndexWriter
 {
-    /// <summary>
-    /// The canonical bytes of <see cref="ToJson"/>, with the files array (tens of thousands of entries on a
-    /// retail dat) streamed instead of built as a tree: the tree cost more memory than the rest of a batch
-    /// (a test holds the two to the same bytes).
-    /// </summary>
+    /// <summary>The bytes <see cref="Write(Stream, BatchInputs, IReadOnlyList{FileEntry}, IReadOnlyList{SkippedItem})"/> writes, in memory (verify, tests).</summary>
     public static byte[] Write(BatchInputs inputs, IReadOnlyList<FileEntry> files, IReadOnlyList<SkippedItem> skipped)
     {
-        if (files.Count == 0) return CanonicalJsonWriter.WriteUtf8(ToJson(inputs, files, skipped));
+        var bytes = new MemoryStream();
+        Write(bytes, inputs, files, skipped);
+        return bytes.ToArray();
+    }
+
+    /// <summary>
+    /// The canonical bytes of <see cref="ToJson"/>, with the files array (tens of thousands of entries on a
+    /// retail dat) streamed to <paramref name="destination"/> in chunks instead of built as a tree or one
+    /// buffer: either cost more memory at the end of a batch than the rest of it (a test holds the
+    /// streamed bytes to the tree's).
+    /// </summary>
+    public static void Write(Stream destination, BatchInputs inputs, IReadOnlyList<FileEntry> files, IReadOnlyList<SkippedItem> skipped)
+    {
+        if (files.Count == 0)
+        {
+            destination.Write(CanonicalJsonWriter.WriteUtf8(ToJson(inputs, files, skipped)));
+            return;
+        }
         const string emptyFiles = "  \"files\": []\n}\n";
         var head = CanonicalJsonWriter.Write(Head(inputs, files, skipped).Add("files", new JsonArr()));
         if (!head.EndsWith(emptyFiles, StringComparison.Ordinal)) throw new InvalidOperationException("index.json must end with its files array");
-        var t = new Utf8JsonText(head.Length + files.Count * 260);
+        var t = new Utf8JsonText(ChunkBytes + 4096);
         t.Utf8(head[..^emptyFiles.Length]).Raw("  \"files\": [\n");
         for (var i = 0; i < files.Count; i++)
         {
+            if (t.Length >= ChunkBytes) t.MoveTo(destination);
             var f = files[i];
             t.Raw("    {\n      \"path\": ").String(f.RelativePath)
                 .Raw(",\n      \"kind\": ").String(BatchIndexFormat.KindName(f.Kind))
@@ -37,8 +51,10 @@ public static class BatchIndexWriter
                 .Raw(",\n      \"sha256\": ").String(f.Sha256)
                 .Raw(i < files.Count - 1 ? "\n    },\n" : "\n    }\n");
         }
-        return t.Raw("  ]\n}\n").ToArray();
+        t.Raw("  ]\n}\n").MoveTo(destination);
     }
+
+    private const int ChunkBytes = 64 * 1024;
 
     public static JsonObj ToJson(BatchInputs inputs, IReadOnlyList<FileEntry> files, IReadOnlyList<SkippedItem> skipped) =>
         Head(inputs, files, skipped).Add("files", JsonArr.Of(files, File));

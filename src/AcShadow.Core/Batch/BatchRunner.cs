@@ -24,7 +24,7 @@ public static class BatchRunner
         // A streamed file's bytes may be lent for the call only: the ones kept are copies.
         var summary = Stream(dat, options, plan, inputs, jobs, f => files.TryAdd(f.RelativePath, f with { Content = f.Content.ToArray() }), null, progress, cancellation);
         var ordered = files.Values.OrderBy(f => f.RelativePath, StringComparer.Ordinal).ToArray();
-        return new BatchResult(ordered, summary.IndexJson, summary.Skipped, summary.SetupsWritten, summary.BspDumps, summary.Scenes, summary.Diagnostics);
+        return new BatchResult(ordered, summary.IndexJson(), summary.Skipped, summary.SetupsWritten, summary.BspDumps, summary.Scenes, summary.Diagnostics);
     }
 
     /// <param name="write">
@@ -93,9 +93,8 @@ public static class BatchRunner
 
         var ordered = files.Values.ToArray();
         var sortedSkipped = skipped.OrderBy(s => s.Id).ToArray();
-        var index = BatchIndexWriter.Write(inputs, ordered, sortedSkipped);
         var state = new IncrementalState(IncrementalState.ToolKey(options, inputs.Formats), records);
-        return new BatchSummary(ordered, index, sortedSkipped, records.Count,
+        return new BatchSummary(ordered, inputs, sortedSkipped, records.Count,
             ordered.Where(f => f.Kind is OutputKind.Bsp or OutputKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
             ordered.Count(f => f.Kind == OutputKind.Scene), new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
     }

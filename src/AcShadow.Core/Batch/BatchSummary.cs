@@ -3,17 +3,24 @@ using AcShadow.Core.Export;
 namespace AcShadow.Core.Batch;
 
 /// <summary>
-/// A streamed batch run's outcome: the entry of every file written (sorted by path, each once), the
-/// bytes of index.json (written last), what was skipped, counts for the summary, how many Setups were
-/// reused unchanged by --incremental, and the state the next --incremental run starts from.
+/// A streamed batch run's outcome: the entry of every file written (sorted by path, each once), what
+/// index.json (written last) is made from, what was skipped, counts for the summary, how many Setups
+/// were reused unchanged by --incremental, and the state the next --incremental run starts from.
 /// </summary>
 public sealed record BatchSummary(
     IReadOnlyList<FileEntry> Files,
-    byte[] IndexJson,
+    BatchInputs Inputs,
     IReadOnlyList<SkippedItem> Skipped,
     int SetupsWritten,
     int BspDumps,
     int Scenes,
     DiagnosticCount Diagnostics,
     int SetupsReused,
-    IncrementalState State);
+    IncrementalState State)
+{
+    /// <summary>index.json, streamed: on a retail dat it is megabytes, written at the end of the run.</summary>
+    public void WriteIndex(Stream destination) => BatchIndexWriter.Write(destination, Inputs, Files, Skipped);
+
+    /// <summary>index.json's bytes, in memory.</summary>
+    public byte[] IndexJson() => BatchIndexWriter.Write(Inputs, Files, Skipped);
+}

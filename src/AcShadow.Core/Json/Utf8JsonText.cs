@@ -69,6 +69,17 @@ public sealed class Utf8JsonText
 
     public byte[] ToArray() => _buffer.AsSpan(0, _length).ToArray();
 
+    /// <summary>Bytes written so far.</summary>
+    public int Length => _length;
+
+    /// <summary>Writes the text so far to <paramref name="destination"/> and starts empty again (chunked output).</summary>
+    public Utf8JsonText MoveTo(Stream destination)
+    {
+        destination.Write(_buffer, 0, _length);
+        _length = 0;
+        return this;
+    }
+
     /// <summary>ASCII punctuation and fixed keys, as given.</summary>
     public Utf8JsonText Raw(string ascii)
     {

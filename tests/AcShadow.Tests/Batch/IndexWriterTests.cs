@@ -23,4 +23,19 @@ public sealed class IndexWriterTests
         var inputs = new BatchInputs(Dat, null, ShapePolicy.Retail, 1.5f, new BatchSelection(true, true, null, null)) { Formats = OutputFormats.Both };
         Assert.Equal(CanonicalJsonWriter.WriteUtf8(BatchIndexWriter.ToJson(inputs, files, skipped)), BatchIndexWriter.Write(inputs, files, skipped));
     }
+
+    [Fact]
+    public void An_index_streamed_in_many_chunks_equals_the_canonical_tree_and_the_in_memory_bytes()
+    {
+        // 3,000 entries is about 750 KB: a dozen chunks, with entries split across chunk boundaries.
+        var files = Enumerable.Range(0, 3000).Select(i => new FileEntry($"gfxobjs/0x{0x01000000 + i:X8}.bsp.json", OutputKind.Bsp,
+            0x01000000u + (uint)i, 0, i % 2000, 100L * i, Convert.ToHexStringLower(BitConverter.GetBytes(i * 2654435761L)).PadLeft(64, '0'))).ToArray();
+        var inputs = new BatchInputs(Dat, null, ShapePolicy.Retail, 1f, new BatchSelection(false, true, null, null));
+        var streamed = new MemoryStream();
+        BatchIndexWriter.Write(streamed, inputs, files, []);
+        var tree = CanonicalJsonWriter.WriteUtf8(BatchIndexWriter.ToJson(inputs, files, []));
+        Assert.True(tree.Length > 10 * 64 * 1024, $"{tree.Length} bytes");
+        Assert.Equal(tree, streamed.ToArray());
+        Assert.Equal(tree, BatchIndexWriter.Write(inputs, files, []));
+    }
 }

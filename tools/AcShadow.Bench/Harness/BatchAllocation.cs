@@ -43,7 +43,7 @@ public static class BatchAllocation
         var elapsed = clock.Elapsed;
         var allocated = GC.GetTotalAllocatedBytes(true) - before;
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"files {files} bytes {bytes} index {summary.IndexJson.Length}\nallocated {allocated:N0} B  gen0 {GC.CollectionCount(0) - gen0} gen1 {GC.CollectionCount(1) - gen1} gen2 {GC.CollectionCount(2) - gen2}  pause {(GC.GetTotalPauseDuration() - pause).TotalMilliseconds:F0} ms  wall {elapsed.TotalSeconds:F2} s"));
+            $"files {files} bytes {bytes} index {summary.IndexJson().Length}\nallocated {allocated:N0} B  gen0 {GC.CollectionCount(0) - gen0} gen1 {GC.CollectionCount(1) - gen1} gen2 {GC.CollectionCount(2) - gen2}  pause {(GC.GetTotalPauseDuration() - pause).TotalMilliseconds:F0} ms  wall {elapsed.TotalSeconds:F2} s"));
         return 0;
     }
 }
