@@ -34,32 +34,33 @@ public static class BenchHarness
                         _ => ProcessRunner.Run(BenchExecutable, ["floor", "--dat", dat.Directory, "--jobs", Text(jobs)])));
                 foreach (var (output, root) in OutputPlaces(options))
                 {
+                    var place = new RunFolders(root, output == "disk");
                     var naiveOut = Path.Combine(root, $"naive-{size}");
                     timings.Add(Measure(log, options, "naive", size, 1, output, "System.Text.Json reflection defaults, one file per Setup and per BSP GfxObj (bench process)",
-                        _ => { Reset(naiveOut); return ProcessRunner.Run(BenchExecutable, ["naive", "--dat", dat.Directory, "--out", naiveOut]); }));
-                    Reset(naiveOut);
+                        run => ProcessRunner.Run(BenchExecutable, ["naive", "--dat", dat.Directory, "--out", place.Empty($"naive-{size}", run)])));
 
                     var outputs = new Dictionary<int, string>();
                     foreach (var jobs in jobCounts)
-                    {
-                        var outDir = Path.Combine(root, $"batch-{size}-j{jobs}");
-                        outputs[jobs] = outDir;
                         timings.Add(Measure(log, options, "batch", size, jobs, output, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder",
-                            _ => { Reset(outDir); return ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", outDir, "--jobs", Text(jobs), "--quiet"]); }));
-                    }
+                            run => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", outputs[jobs] = place.Empty($"batch-{size}-j{jobs}", run), "--jobs", Text(jobs), "--quiet"])));
                     if (cores > 1)
                         checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({size}, {output})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
                     if (output == "disk")
                     {
-                        var incrementalOut = Path.Combine(root, $"incremental-{size}");
-                        Reset(incrementalOut);
+                        // The everyday re-run: every file replaced in the folder the last run wrote.
+                        var again = place.Empty($"again-{size}", -2);
+                        ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", again, "--quiet"]);
+                        timings.Add(Measure(log, options, "batch, over its last output", size, cores, output, $"acshadow batch --all --jobs {cores} --quiet into the folder the previous run wrote (every file replaced)",
+                            _ => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", again, "--jobs", Text(cores), "--quiet"])));
+
+                        var incrementalOut = place.Empty($"incremental-{size}", -2);
                         ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"]);
                         timings.Add(Measure(log, options, "batch --incremental", size, cores, output, "acshadow batch --all --incremental --quiet, nothing changed since the last run",
                             _ => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", incrementalOut, "--incremental", "--quiet"])));
                         checks.Add(new Check($"--incremental output identical to a full run ({size})", OutputComparison.Differences(incrementalOut, outputs[cores], ["incremental.json"])));
-                        Reset(incrementalOut);
                     }
-                    foreach (var dir in outputs.Values) Reset(dir);
+                    // Disk folders stay until the bench ends: deleting them now would slow the next disk runs (RunFolders).
+                    if (output != "disk") place.Clear();
                 }
             }
 
@@ -122,9 +123,14 @@ public static class BenchHarness
     /// Empties a workload's folder and flushes the file systems, so every timed run starts from the same
     /// state instead of paying for the previous run's write-back and deletions.
     /// </summary>
-    private static void Reset(string dir)
+    internal static void Reset(string dir)
     {
         if (Directory.Exists(dir)) Directory.Delete(dir, true);
+        Sync();
+    }
+
+    internal static void Sync()
+    {
         if (OperatingSystem.IsLinux() || OperatingSystem.IsMacOS()) ProcessRunner.Run("sync", []);
     }
 
