@@ -71,9 +71,11 @@ public static class BatchCommand
 
         int filesWritten = 0, unchanged = 0;
         long written = 0;
+        // A file that already holds exactly its bytes is left alone: a re-run keeps timestamps and, on ext4,
+        // avoids replacing a file, whose freed inode every later create in the next minute steps over.
         void Write(string path, ReadOnlySpan<byte> content)
         {
-            if (incremental && OutputFolder.IsUnchanged(outDir, path, content)) Interlocked.Increment(ref unchanged);
+            if (OutputFolder.IsUnchanged(outDir, path, content)) Interlocked.Increment(ref unchanged);
             else
             {
                 Interlocked.Add(ref written, OutputFolder.WriteAtomically(outDir, path, content));
@@ -115,7 +117,7 @@ public static class BatchCommand
             $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s)"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  files: {filesWritten} written ({written} bytes){(incremental ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
+            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
         foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
             o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
         if (result.Diagnostics.Diagnostics > 0)

@@ -1,5 +1,7 @@
+using System.Buffers;
 using System.Diagnostics;
 using System.Globalization;
+using Microsoft.Win32.SafeHandles;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
 
@@ -144,7 +146,7 @@ public static class OutputFolder
     /// writes thousands of files into the same two). One left by an earlier process that had this process's
     /// id (so it was not cleared as abandoned) is replaced.
     /// </summary>
-    private static Microsoft.Win32.SafeHandles.SafeFileHandle CreateTemporary(string temp)
+    private static SafeFileHandle CreateTemporary(string temp)
     {
         try
         {
@@ -164,13 +166,38 @@ public static class OutputFolder
     }
 
     /// <summary>True when the file already holds exactly these bytes (for --incremental).</summary>
+    /// <remarks>One open and chunked reads into a pooled buffer: a batch asks this of every file it makes.</remarks>
     public static bool IsUnchanged(string root, string relativePath, ReadOnlySpan<byte> content)
     {
-        var target = TargetPath(root, relativePath);
-        if (!File.Exists(target)) return false;
-        var info = new FileInfo(target);
-        if (info.Length != content.Length) return false;
-        return File.ReadAllBytes(target).AsSpan().SequenceEqual(content);
+        SafeFileHandle handle;
+        try
+        {
+            handle = File.OpenHandle(TargetPath(root, relativePath), FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete);
+        }
+        // Missing, a folder, unreadable: not these bytes; the write that follows reports what is wrong.
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
+        }
+        using (handle)
+        {
+            if (RandomAccess.GetLength(handle) != content.Length) return false;
+            var chunk = ArrayPool<byte>.Shared.Rent(Math.Min(content.Length, 1 << 16));
+            try
+            {
+                for (var offset = 0; offset < content.Length;)
+                {
+                    var read = RandomAccess.Read(handle, chunk.AsSpan(0, Math.Min(chunk.Length, content.Length - offset)), offset);
+                    if (read <= 0 || !chunk.AsSpan(0, read).SequenceEqual(content.Slice(offset, read))) return false;
+                    offset += read;
+                }
+                return true;
+            }
+            finally
+            {
+                ArrayPool<byte>.Shared.Return(chunk);
+            }
+        }
     }
 
     private static string TargetPath(string root, string relativePath) =>

@@ -132,6 +132,33 @@ public class BatchCommandTests
     }
 
     [Fact]
+    public void A_rerun_leaves_files_holding_their_bytes_alone_and_replaces_the_rest()
+    {
+        var (first, dir) = RunBatch("--doors");
+        using (dir)
+        {
+            Assert.Equal(0, first.ExitCode);
+            var shadow = Path.Combine(dir.Path, "setups/0x020019FF.shadow.json");
+            var stale = Path.Combine(dir.Path, "setups/0x0200024F.shadow.json");
+            var stamp = new DateTime(2001, 1, 1, 0, 0, 0, DateTimeKind.Utc);
+            File.SetLastWriteTimeUtc(shadow, stamp);
+            var expected = File.ReadAllText(stale);
+            File.WriteAllText(stale, expected.Replace("\"format\"", "\"formaT\"", StringComparison.Ordinal)); // same length, other bytes
+            File.SetLastWriteTimeUtc(stale, stamp);
+
+            var second = CliRun.Of("batch", "--out", dir.Path, "--doors");
+            Assert.Equal(0, second.ExitCode);
+            Assert.Equal(stamp, File.GetLastWriteTimeUtc(shadow));
+            Assert.Equal(expected, File.ReadAllText(stale));
+            Assert.NotEqual(stamp, File.GetLastWriteTimeUtc(stale));
+            // The stale file and index.json (always written when not --incremental); everything else left alone.
+            var total = dir.Files().Length;
+            Assert.Contains("files: 2 written", second.Out);
+            Assert.Contains($"{total - 2} unchanged and left alone", second.Out);
+        }
+    }
+
+    [Fact]
     public void Landblock_without_dat_options_uses_the_sample_cell_dat()
     {
         var (run, dir) = RunBatch("--landblock", "0xA9B4FFFE");
