@@ -7,7 +7,7 @@ namespace AcShadow.Core.Dat;
 /// <see cref="IDatSource"/> over a <see cref="DatArchive"/>: decodes objects on demand and caches them,
 /// so a GfxObj shared by many Setups is decoded once. With a cache capacity it keeps at most that many
 /// decoded objects (oldest dropped first), so a batch over a whole dat holds a working set, not the dat.
-/// Safe to use from many threads; the archive serialises its own reads.
+/// Safe to use from many threads: the archive reads in parallel, and each thread decodes from its own buffer.
 /// </summary>
 public sealed class DatDatabase : IDatSource, IDisposable
 {
