@@ -36,6 +36,10 @@ public static class CollisionCorpus
         yield return ("wedge", TestMesh.Wedge(new(-1, -0.5f, 0), 2, 1, 0.6f));
         yield return ("floor", TestMesh.Floor(1, 1, 0));
         yield return ("leaf and jamb", TestMesh.Box(new(0, 0, 1.1f), new(0.965f, 0.13f, 1.1f)).Plus(TestMesh.Box(new(1.05f, 0, 1.15f), new(0.05f, 0.15f, 1.15f))));
+        // Non-planar faces, far beyond the 1e-4 m tolerance: the reference's per-polygon sphere filter must
+        // still pass every polygon the exact test would touch.
+        yield return ("twisted floor", TestMesh.Floor(1, 1, 0).Pulled(1, new(0, 0, 0.35f)).Pulled(3, new(0, 0, 0.2f)));
+        yield return ("box with a pulled corner", TestMesh.Box(new(0, 0, 0.8f), new(0.6f, 0.4f, 0.8f)).Pulled(7, new(0.25f, -0.2f, 0.3f)));
         yield return ("stairs", TestMesh.Box(new(0, 0, 0.1f), new(1, 0.5f, 0.1f)).Plus(TestMesh.Box(new(0.3f, 0, 0.3f), new(0.7f, 0.5f, 0.1f))).Plus(TestMesh.Box(new(0.6f, 0, 0.5f), new(0.4f, 0.5f, 0.1f))));
     }
 

@@ -36,6 +36,15 @@ public class ReferenceOracleAgreementTests(ITestOutputHelper output)
         Assert.True(total >= ForgedProbes);
     }
 
+    [Fact]
+    public void The_forged_parts_include_polygons_far_from_planar()
+    {
+        // Without them the agreement above would never exercise the sphere filter's slack for non-planar polygons.
+        var twisted = CollisionCorpus.Forged().Where(f => f.Dump.Stats.NonPlanarPolygons.Count > 0).Select(f => f.Name).ToArray();
+        Assert.Equal(4, twisted.Length);
+        Assert.All(twisted, name => Assert.True(name.StartsWith("twisted", StringComparison.Ordinal) || name.StartsWith("box with a pulled corner", StringComparison.Ordinal), name));
+    }
+
     private int Agree((string Name, CompiledBsp Bsp)[] parts, int probes, int seed)
     {
         var watch = Stopwatch.StartNew();

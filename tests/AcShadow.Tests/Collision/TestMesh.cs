@@ -36,6 +36,13 @@ public sealed record TestMesh(IReadOnlyList<Vector3> Vertices, IReadOnlyList<sho
     public static TestMesh Floor(float halfX, float halfY, float z) =>
         new([new(-halfX, -halfY, z), new(halfX, -halfY, z), new(halfX, halfY, z), new(-halfX, halfY, z)], [[0, 1, 2, 3]]);
 
+    /// <summary>
+    /// The mesh with vertex <paramref name="index"/> moved by <paramref name="offset"/>: the faces that share
+    /// it stop being planar (retail tests such a polygon against its averaged plane).
+    /// </summary>
+    public TestMesh Pulled(int index, Vector3 offset) =>
+        new(Vertices.Select((v, i) => i == index ? v + offset : v).ToArray(), Polygons);
+
     public TestMesh Plus(TestMesh other)
     {
         var offset = (short)Vertices.Count;
