@@ -73,9 +73,9 @@ public static class BatchCommand
         long written = 0;
         // A file that already holds exactly its bytes is left alone: a re-run keeps timestamps and, on ext4,
         // avoids replacing a file, whose freed inode every later create in the next minute steps over.
-        void Write(string path, ReadOnlySpan<byte> content)
+        void Write(string path, ReadOnlyMemory<byte> content)
         {
-            if (OutputFolder.IsUnchanged(outDir, path, content)) Interlocked.Increment(ref unchanged);
+            if (OutputFolder.IsUnchanged(outDir, path, content.Span)) Interlocked.Increment(ref unchanged);
             else
             {
                 Interlocked.Add(ref written, OutputFolder.WriteAtomically(outDir, path, content));
@@ -87,7 +87,7 @@ public static class BatchCommand
         BatchSummary result;
         try
         {
-            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content.Span), reuse, progress.Report);
+            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content), reuse, progress.Report);
         }
         catch (AggregateException e) when (e.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first)
         {

@@ -86,31 +86,30 @@ public static class OutputFolder
         }
     }
 
-    public static long WriteAtomically(string root, OutputFile file) => WriteAtomically(root, file.RelativePath, file.Content.Span);
+    public static long WriteAtomically(string root, OutputFile file) => WriteAtomically(root, file.RelativePath, file.Content);
 
-    public static long WriteAtomically(string root, string relativePath, ReadOnlySpan<byte> content)
-    {
-        var target = TargetPath(root, relativePath);
-        var temp = target + $".{Environment.ProcessId}{TempSuffix}";
-        try
+    public static long WriteAtomically(string root, string relativePath, ReadOnlyMemory<byte> content) =>
+        // A handle and one positional write: no stream buffer, seek or truncate of a file just created (a
+        // batch writes tens of thousands; each saved call counts). Not File.WriteAllBytes: it preallocates
+        // the length first, and a file the file system cannot hold then fails as an ArgumentException
+        // instead of the write's own I/O error.
+        Replace(root, relativePath, handle =>
         {
-            // A handle and one positional write: no stream buffer, seek or truncate of a file just created (a
-            // batch writes tens of thousands; each saved call counts). Not File.WriteAllBytes: it preallocates
-            // the length first, and a file the file system cannot hold then fails as an ArgumentException
-            // instead of the write's own I/O error.
-            using (var handle = CreateTemporary(temp))
-                RandomAccess.Write(handle, content, 0);
-            File.Move(temp, target, overwrite: true);
+            RandomAccess.Write(handle, content.Span, 0);
             return content.Length;
-        }
-        catch (Exception e) when (IsWriteFailure(e))
-        {
-            throw WriteFailed(target, temp, e);
-        }
-    }
+        });
 
-    /// <summary>As <see cref="WriteAtomically(string, string, ReadOnlySpan{byte})"/>, for content <paramref name="write"/> streams (it writes in large chunks).</summary>
-    public static long WriteAtomically(string root, string relativePath, Action<Stream> write)
+    /// <summary>As <see cref="WriteAtomically(string, string, ReadOnlyMemory{byte})"/>, for content <paramref name="write"/> streams (it writes in large chunks).</summary>
+    public static long WriteAtomically(string root, string relativePath, Action<Stream> write) =>
+        Replace(root, relativePath, handle =>
+        {
+            using var stream = new FileStream(handle, FileAccess.Write, bufferSize: 0);
+            write(stream);
+            return stream.Position;
+        });
+
+    /// <summary>Writes a new temporary file beside the target with <paramref name="write"/> (its length out), then renames it over the target.</summary>
+    private static long Replace(string root, string relativePath, Func<SafeFileHandle, long> write)
     {
         var target = TargetPath(root, relativePath);
         var temp = target + $".{Environment.ProcessId}{TempSuffix}";
@@ -118,27 +117,16 @@ public static class OutputFolder
         {
             long length;
             using (var handle = CreateTemporary(temp))
-            using (var stream = new FileStream(handle, FileAccess.Write, bufferSize: 0))
-            {
-                write(stream);
-                length = stream.Position;
-            }
+                length = write(handle);
             File.Move(temp, target, overwrite: true);
             return length;
         }
-        catch (Exception e) when (IsWriteFailure(e))
+        // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException)
         {
-            throw WriteFailed(target, temp, e);
+            TryDelete(temp);
+            throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
         }
-    }
-
-    // .NET reports a write past the file-size limit (EFBIG) as ArgumentOutOfRangeException, a full disk as IOException.
-    private static bool IsWriteFailure(Exception e) => e is IOException or UnauthorizedAccessException or ArgumentOutOfRangeException;
-
-    private static CliException WriteFailed(string target, string temp, Exception e)
-    {
-        TryDelete(temp);
-        return new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
     }
 
     /// <summary>

@@ -29,21 +29,8 @@ public sealed class Utf8JsonText
     /// file (the result), not a growing buffer and its copy, which for BSP dumps are mostly large-object-heap
     /// arrays that only a gen2 collection frees.
     /// </summary>
-    public static byte[] Build<TState>(TState state, Action<Utf8JsonText, TState> write)
-    {
-        var text = t_spare ?? new Utf8JsonText(64 * 1024);
-        t_spare = null;
-        text._length = 0;
-        try
-        {
-            write(text, state);
-            return text.ToArray();
-        }
-        finally
-        {
-            if (text._buffer.Length <= MaxKeptBytes) t_spare = text;
-        }
-    }
+    public static byte[] Build<TState>(TState state, Action<Utf8JsonText, TState> write) =>
+        Lend(state, write, static bytes => bytes.ToArray());
 
     /// <summary>
     /// As <see cref="Build"/>, but the bytes are lent to <paramref name="use"/> straight from this thread's
