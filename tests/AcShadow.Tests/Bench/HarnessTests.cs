@@ -43,6 +43,12 @@ public sealed class HarnessTests
             foreach (var name in new[] { "naive", "batch" })
                 Assert.Contains(timings, t => t.GetProperty("name").GetString() == name && t.GetProperty("output").GetString() == output);
         Assert.All(timings.Where(t => t.GetProperty("name").GetString() == "floor"), t => Assert.Equal("none", t.GetProperty("output").GetString()));
+        // The everyday re-run into the last run's folder is timed on disk only.
+        Assert.All(timings.Where(t => t.GetProperty("name").GetString() == "batch, again into its output"),
+            t => Assert.Equal("disk", t.GetProperty("output").GetString()));
+        Assert.Equal(2, timings.Count(t => t.GetProperty("name").GetString() == "batch, again into its output"));
+        // Every run's output folder (one per disk run) is gone when the harness ends.
+        Assert.False(Directory.Exists(options.WorkDirectory) && Directory.EnumerateFileSystemEntries(options.WorkDirectory).Any());
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "dump --setup");
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "dump --setup, new folder");
         Assert.Contains(timings, t => t.GetProperty("name").GetString() == "acshadow --version");
