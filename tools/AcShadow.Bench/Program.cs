@@ -17,10 +17,16 @@ switch (args.FirstOrDefault())
             Console.Error.WriteLine($"bench: {e.Message}");
             return 2;
         }
-    case "alloc":
-        return BatchAllocation.Run(args);
-    case "floor" or "naive":
-        return Workloads.Run(args);
+    case "alloc" or "floor" or "naive":
+        try
+        {
+            return args[0] == "alloc" ? BatchAllocation.Run(args) : Workloads.Run(args);
+        }
+        catch (ArgumentException e)
+        {
+            Console.Error.WriteLine($"bench: {e.Message}");
+            return 2;
+        }
     default:
         BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
         return 0;

@@ -15,13 +15,9 @@ public static class BatchAllocation
 {
     public static int Run(IReadOnlyList<string> args)
     {
-        string Value(string name, string fallback)
-        {
-            var i = args.ToList().IndexOf(name);
-            return i >= 0 && i + 1 < args.Count ? args[i + 1] : fallback;
-        }
-        var jobs = int.Parse(Value("--jobs", "1"), CultureInfo.InvariantCulture);
-        using var portal = Workloads.Open(Value("--dat", ""));
+        var a = new BenchArgs(args, "usage: AcShadow.Bench alloc --dat DIR [--jobs N]");
+        var jobs = a.PositiveInt("--jobs", 1);
+        using var portal = Workloads.Open(a.Required("--dat", "the folder holding client_portal.dat"));
         var source = new DatDatabase(portal.Archive, cacheCapacity: 256);
         var options = new ShapeBuildOptions(ShapePolicy.Retail);
         var selection = new BatchSelection(false, true, null, null);

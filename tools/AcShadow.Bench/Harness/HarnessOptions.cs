@@ -1,4 +1,3 @@
-using System.Globalization;
 using AcShadow.Forge;
 
 namespace AcShadow.Bench.Harness;
@@ -35,19 +34,13 @@ public sealed record HarnessOptions(
 
     public static HarnessOptions Parse(IReadOnlyList<string> args)
     {
-        var small = args.Contains("--small");
-        string? Value(string name)
-        {
-            var i = args.ToList().IndexOf(name);
-            if (i < 0) return null;
-            return i + 1 < args.Count ? args[i + 1] : throw new ArgumentException($"{name} needs a value; {Usage}");
-        }
-        int Int(string name, int fallback) => Value(name) is { } text
-            ? int.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out var v) && v > 0 ? v : throw new ArgumentException($"{name} {text}: give a positive integer")
-            : fallback;
+        var a = new BenchArgs(args, Usage);
+        var small = a.Has("--small");
+        string? Value(string name) => a.Value(name);
+        int Int(string name, int fallback) => a.PositiveInt(name, fallback);
 
         var setups = Int("--setups", small ? SmallSetups : ScaleSpecGenerator.DefaultSetups);
-        var cli = Value("--cli") ?? throw new ArgumentException($"--cli is required: the acshadow executable (or acshadow.dll) to measure; {Usage}");
+        var cli = a.Required("--cli", "the acshadow executable (or acshadow.dll) to measure");
         var cache = Value("--cache") ?? Path.Combine(Path.GetTempPath(), "acshadow-bench-cache");
         return new HarnessOptions(
             setups,

@@ -9,20 +9,17 @@ namespace AcShadow.Bench.Harness;
 /// </summary>
 public static class Workloads
 {
+    private const string Usage = "usage: AcShadow.Bench floor|naive --dat DIR [--jobs N] [--out DIR]";
+
     public static int Run(IReadOnlyList<string> args)
     {
-        string Value(string name, string fallback)
-        {
-            var i = args.ToList().IndexOf(name);
-            return i >= 0 && i + 1 < args.Count ? args[i + 1] : fallback;
-        }
-        var dat = Value("--dat", "");
-        var jobs = int.Parse(Value("--jobs", "1"), System.Globalization.CultureInfo.InvariantCulture);
-        using var database = Open(dat);
+        var a = new BenchArgs(args, Usage);
+        var jobs = a.PositiveInt("--jobs", 1);
+        using var database = Open(a.Required("--dat", "the folder holding client_portal.dat"));
         long count = args[0] switch
         {
             "floor" => Floor(database, jobs),
-            "naive" => Naive(database, Value("--out", "naive-out")),
+            "naive" => Naive(database, a.Value("--out") ?? "naive-out"),
             _ => throw new ArgumentException($"unknown workload {args[0]}"),
         };
         Console.WriteLine(count.ToString(System.Globalization.CultureInfo.InvariantCulture));
