@@ -49,7 +49,7 @@ public static class DumpCommand
         foreach (var file in files)
         {
             // A file already holding these exact bytes is left alone: no rewrite, its timestamp kept (build
-            // tools and git see no change), and no replace-by-rename for the file system to flush.
+            // tools and git see no change), and no replace-by-rename (a new inode, the old one freed).
             if (OutputFolder.IsUnchanged(outDir, file.RelativePath, file.Content.Span))
                 console.Out.WriteLine($"unchanged {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes, already these bytes)");
             else

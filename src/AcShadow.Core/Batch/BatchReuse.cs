@@ -3,6 +3,7 @@ using System.Security.Cryptography;
 using System.Text;
 using System.Collections.Concurrent;
 using AcShadow.Core.Export;
+using AcShadow.Core.Dat;
 
 namespace AcShadow.Core.Batch;
 
@@ -25,12 +26,6 @@ public sealed class BatchReuse(IncrementalState? previous, string toolKey, Batch
     /// touches is read once more here only to be hashed.
     /// </summary>
     public delegate int ObjectReader(uint id, ref byte[] buffer);
-
-    /// <summary>A read buffer larger than this is let go, so a thread keeps at most this much between objects.</summary>
-    private const int MaxKeptBytes = 4 << 20;
-
-    /// <summary>Each thread's read buffer: digests are computed on the worker threads.</summary>
-    [ThreadStatic] private static byte[]? t_buffer;
 
     private readonly Dictionary<uint, IncrementalSetup> _previous =
         previous is not null && previous.Tool == toolKey ? previous.Setups.ToDictionary(s => s.Id) : [];
@@ -56,10 +51,16 @@ public sealed class BatchReuse(IncrementalState? previous, string toolKey, Batch
 
     private byte[] Digest(uint id) => _digests.GetOrAdd(id, static (key, read) =>
     {
-        var buffer = t_buffer ?? new byte[64 * 1024];
-        var length = read(key, ref buffer);
-        t_buffer = buffer.Length <= MaxKeptBytes ? buffer : null;
-        return length < 0 ? new byte[SHA256.HashSizeInBytes] : SHA256.HashData(buffer.AsSpan(0, length));
+        var buffer = ObjectBytesBuffer.Take();
+        try
+        {
+            var length = read(key, ref buffer);
+            return length < 0 ? new byte[SHA256.HashSizeInBytes] : SHA256.HashData(buffer.AsSpan(0, length));
+        }
+        finally
+        {
+            ObjectBytesBuffer.Return(buffer);
+        }
     }, objectBytes);
 
     /// <summary>The previous outcome when nothing it depends on changed and its files are intact; else null.</summary>

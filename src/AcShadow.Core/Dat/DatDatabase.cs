@@ -16,16 +16,6 @@ public sealed class DatDatabase : IDatSource, IDisposable
     private readonly ConcurrentQueue<uint> _order = new();
     private readonly int? _capacity;
 
-    /// <summary>
-    /// Each thread's buffer for an object's raw bytes, reused from object to object (decoders copy what
-    /// they keep). A batch reads hundreds of MB of objects; the large ones, each a new array, were
-    /// large-object-heap garbage that only gen2 collections free. Null while in use.
-    /// </summary>
-    [ThreadStatic] private static byte[]? t_objectBytes;
-
-    /// <summary>A buffer grown past this by a huge object is let go rather than kept by the thread.</summary>
-    private const int MaxKeptBytes = 4 << 20;
-
     public DatDatabase(DatArchive archive, int? cacheCapacity = null)
     {
         if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
@@ -56,8 +46,7 @@ public sealed class DatDatabase : IDatSource, IDisposable
         {
             // The IDatSource boundary: whatever damaged bytes make the chain walk or a decoder throw
             // (bounds, overflow, end of stream, a bad tag, a cycle) leaves here as one "corrupt dat" naming the object.
-            var buffer = t_objectBytes ?? [];
-            t_objectBytes = null;
+            var buffer = ObjectBytesBuffer.Take();
             try
             {
                 var size = _archive.ReadObjectBytesUnnamed(id, ref buffer);
@@ -73,7 +62,7 @@ public sealed class DatDatabase : IDatSource, IDisposable
             }
             finally
             {
-                if (buffer.Length <= MaxKeptBytes) t_objectBytes = buffer;
+                ObjectBytesBuffer.Return(buffer);
             }
         }, LazyThreadSafetyMode.ExecutionAndPublication);
         var lazy = _cache.GetOrAdd(id, created);
