@@ -7,6 +7,7 @@ namespace AcShadow.Tests.Fuzz;
 /// and `batch`; every one must end with a documented exit code, a "corrupt dat" message naming the object
 /// when one is damaged, whole output files, and within the time and memory limits.
 /// </summary>
+[Trait("Speed", "Slow")]
 public class FuzzCampaignTests
 {
     public const long Seed = 20261122;
