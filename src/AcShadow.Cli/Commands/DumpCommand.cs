@@ -8,6 +8,8 @@ using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Commands;
 
