@@ -17,6 +17,7 @@ public static class FileFormats
     public const string Scene = "acshadow.scene/1";
     public const string Audit = "acshadow.audit/1";
     public const string Cell = "acshadow.cell/1";
+    public const string Doctor = "acshadow.doctor/1";
 
     /// <summary>
     /// acdream's GfxObj fixture shape carries no format field (its field set is fixed by acdream); the
@@ -41,6 +42,8 @@ public static class FileFormats
             "a batch's inputs and every file it wrote, with SHA-256"),
         new("audit", Audit, "(audit --format json --out FILE)", "urn:acshadow:schema:acshadow.audit-1",
             "the audit report: one row per Setup, a summary by category, what was skipped"),
+        new("doctor", Doctor, "(doctor --out FILE)", "urn:acshadow:schema:acshadow.doctor-1",
+            "the doctor report: a verdict, counts and example ids per check of acshadow's assumptions on a dat; no dat content"),
         new("acdream", AcdreamGfxObj, "gfxobjs/0x%08X.gfxobj.json", "urn:acshadow:schema:acdream.gfxobj",
             "acdream's GfxObj fixture shape (--format acdream): polygons with planes and vertices, no BSP tree"),
         new("acdream-cell", AcdreamCell, "cells/0x%08X.json", "urn:acshadow:schema:acdream.cell",

@@ -46,6 +46,11 @@ public static class CommandExamples
             "acshadow chart --setup 0x020019FF --out chart-door",
             "acshadow chart --doors --out chart-doors --probe-radius 0.5 --spacing 0.25",
         ],
+        ["doctor"] =
+        [
+            "acshadow doctor",
+            "acshadow doctor --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out doctor.json",
+        ],
         ["formats"] =
         [
             "acshadow formats",

@@ -25,6 +25,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             Run("dump", "--setup", "0x020019FF", "--format", "both", "--out", Path.Combine(Dir.Path, "dump"));
             Run("batch", "--doors", "--all", "--landblock", "0xA9B4", "--format", "both", "--out", Path.Combine(Dir.Path, "batch"), "--quiet");
             Run("audit", "--doors", "--chart", "--format", "json", "--out", Path.Combine(Dir.Path, "audit.json"));
+            Run("doctor", "--out", Path.Combine(Dir.Path, "doctor.json"));
         }
 
         private static void Run(params string[] args)
@@ -62,6 +63,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             "scene.json" => "scene",
             "index.json" => "index",
             "audit.json" => "audit",
+            "doctor.json" => "doctor",
             _ => throw new InvalidOperationException($"no format for {path}"),
         };
         return FileFormats.All.Single(f => f.Name == kind);
@@ -89,7 +91,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     {
         var validator = LoadSchemas();
         var files = Directory.GetFiles(_outputs.Dir.Path, "*.json", SearchOption.AllDirectories);
-        Assert.Equal(["acdream", "acdream-cell", "audit", "bsp", "cell", "index", "scene", "shadow"], files.Select(f => FormatOf(f).Name).Distinct().Order());
+        Assert.Equal(["acdream", "acdream-cell", "audit", "bsp", "cell", "doctor", "index", "scene", "shadow"], files.Select(f => FormatOf(f).Name).Distinct().Order());
         foreach (var file in files)
         {
             var format = FormatOf(file);
