@@ -3,6 +3,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Forge.Bsp;
 using AcShadow.Forge.Spec;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Forge;
 

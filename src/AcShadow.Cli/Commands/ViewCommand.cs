@@ -10,6 +10,8 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.View;
 using AcShadow.Fixtures;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 

@@ -7,6 +7,8 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Cells;
 

@@ -3,6 +3,7 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Core.Json;
 

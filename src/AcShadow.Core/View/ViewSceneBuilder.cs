@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.View;
 

@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.Numerics;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Shapes;
 using AcShadow.Core.View;
 using AcShadow.Fixtures;
@@ -9,6 +8,9 @@ using AcShadow.Tests.Fixtures;
 using AcShadow.Tests.Support;
 using SharpGLTF.Schema2;
 using SharpGLTF.Validation;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.View;
 
