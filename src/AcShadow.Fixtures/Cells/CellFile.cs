@@ -1,6 +1,6 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures.Cells;
 

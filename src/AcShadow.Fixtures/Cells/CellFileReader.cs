@@ -1,5 +1,5 @@
 using System.Text.Json;
-using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Fixtures.Cells;
 

@@ -1,6 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Fixtures.Collision;
 

@@ -3,7 +3,7 @@ using System.Text.Json;
 using System.Text.Json.Serialization;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Cells;
 using AcShadow.Tests.Support;
