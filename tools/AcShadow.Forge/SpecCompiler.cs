@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Forge.Bsp;
 using AcShadow.Forge.Spec;
 using AcShadow.Fixtures.Bsp;

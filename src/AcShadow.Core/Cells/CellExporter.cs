@@ -1,11 +1,9 @@
 using AcShadow.Core.Batch;
-using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
-using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Cells;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;

@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Cells;

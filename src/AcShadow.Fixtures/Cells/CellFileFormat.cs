@@ -1,4 +1,3 @@
-
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Fixtures.Cells;

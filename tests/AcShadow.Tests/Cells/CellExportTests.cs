@@ -3,10 +3,10 @@ using System.Text.Json;
 using System.Text.Json.Serialization;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Cells;
 using AcShadow.Tests.Support;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Cells;
 

@@ -1,3 +1,4 @@
+using AcShadow.Fixtures.Bsp;
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
 

@@ -1,3 +1,4 @@
+using AcShadow.Fixtures.Bsp;
 using System.Numerics;
 
 namespace AcShadow.Core.Dat.Objects;
