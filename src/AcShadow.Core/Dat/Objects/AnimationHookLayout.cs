@@ -5,10 +5,11 @@ namespace AcShadow.Core.Dat.Objects;
 /// then its payload, and the next hook follows straight after: no padding, even after a ReplaceObject whose
 /// long-form id leaves the next hook two bytes off a 4-byte boundary. The two public readers agree on every
 /// layout here (DatReaderWriter's dats.xml, ACE's DatLoader hook classes) except CreateBlockingParticle,
-/// which DatReaderWriter gives no payload and ACE reads as a CreateParticle: ACE is followed, because its
-/// class derives from CreateParticle's as retail's does, and because a Setup or Animation carrying one would
-/// lose its fields after the hook under the other reading. NoOp has no layout in either reader (both stop at
-/// it); acshadow reads it as the bare header, a no-op carrying nothing. docs/formats.md lists the same table.
+/// which DatReaderWriter gives no payload and ACE reads as a CreateParticle (its class derives from that
+/// hook's): ACE is followed, because it is the reader that runs against real retail dats, and because a
+/// frame carrying one would lose its fields after the hook under the other reading if the payload is there.
+/// NoOp has no layout in either reader (both stop at it); acshadow reads it as the bare header, a no-op
+/// carrying nothing. docs/dat-layer.md lists the same table.
 /// </summary>
 public static class AnimationHookLayout
 {
