@@ -4,7 +4,6 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Forge.Bsp;
 using AcShadow.Forge.Spec;
-using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Forge;
 

@@ -3,7 +3,6 @@ using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Cells;
-using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Core.Json;
 

@@ -74,7 +74,7 @@ public class CellLayoutTests
         var cell = EnvCell.Read(new DatBinaryReader(bytes));
         Assert.Empty(cell.StaticObjects);
         Assert.Equal(0x0D000001u, cell.EnvironmentFileId);
-        Assert.Equal(bytes.Length, 4 * 3 + 4 + 4 + 28);
+        Assert.Equal(4 * 3 + 4 + 4 + 28, bytes.Length);
     }
 
     [Fact]

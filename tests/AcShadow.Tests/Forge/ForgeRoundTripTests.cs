@@ -2,6 +2,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Forge;
 using AcShadow.Forge.Spec;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Tests.Forge;
 

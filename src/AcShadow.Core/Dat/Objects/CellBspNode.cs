@@ -1,6 +1,5 @@
 using AcShadow.Fixtures.Bsp;
 using System.Numerics;
-using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Core.Dat.Objects;
 
