@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Text.Json;
-using AcShadow.Core.Json;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
 

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
@@ -9,6 +10,7 @@ using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 

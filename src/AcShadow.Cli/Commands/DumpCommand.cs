@@ -4,6 +4,8 @@ using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Commands;
 

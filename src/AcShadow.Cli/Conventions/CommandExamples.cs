@@ -44,6 +44,12 @@ public static class CommandExamples
             "acshadow chart --setup 0x020019FF --out chart-door",
             "acshadow chart --doors --out chart-doors --probe-radius 0.5 --spacing 0.25",
         ],
+        ["view"] =
+        [
+            "acshadow view --setup 0x020019FF --out v",
+            "acshadow view --fixtures fixtures --out v",
+            "acshadow view --setup 0x020019FF --chart chart-door --out v",
+        ],
         ["formats"] =
         [
             "acshadow formats",

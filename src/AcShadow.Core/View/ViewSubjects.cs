@@ -5,6 +5,9 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.View;
 

@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Forge;
 using AcShadow.Tests.Support;
 
