@@ -12,7 +12,7 @@ namespace AcShadow.Tests.Bench;
 /// </summary>
 public sealed class HarnessTests
 {
-    private static readonly string[] Measured = ["floor", "naive", "batch", "batch --incremental"];
+    private static readonly string[] Measured = ["floor", "naive", "batch", "batch --incremental", "doctor"];
 
     [Fact]
     public void A_tiny_harness_run_writes_every_figure_to_bench_json()
