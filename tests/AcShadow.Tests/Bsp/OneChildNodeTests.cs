@@ -1,8 +1,10 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Tests.Errors;
 using AcShadow.Tests.Forge;
 using AcShadow.Tests.Support;

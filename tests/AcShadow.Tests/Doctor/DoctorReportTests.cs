@@ -4,6 +4,7 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Doctor;
 using AcShadow.Forge;
 using AcShadow.Tests.Support;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Tests.Doctor;
 
