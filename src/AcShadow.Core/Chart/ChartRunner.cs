@@ -5,7 +5,7 @@ namespace AcShadow.Core.Chart;
 
 /// <summary>
 /// Runs the chart: for each object, prepare every model, lay the probes (grid around everything any model
-/// sees, doorway lines across the reference's footprint), ask every model about every probe, compare with
+/// sees, doorway lines across the reference's footprint, stability probes on its boundary: <see cref="ChartProbes"/>), ask every model about every probe, compare with
 /// the first model (the reference), rank the disagreements by nearness to the boundary, and time each
 /// model. Objects and models run one after another, so answers are the same on any machine and timings are
 /// not disturbed by each other.
@@ -35,14 +35,8 @@ public static class ChartRunner
     {
         var prepared = models.Select(m => Prepare(m, subject)).ToArray();
         var reference = prepared[0];
-        var everything = ShapeBounds.Of(prepared.SelectMany(p => p.Shapes));
-        var referenceBounds = ShapeBounds.Of(reference.Shapes);
-        var grid = ProbeGrid.Build(everything, options);
-        var opening = DoorwayProbes.Find(referenceBounds);
-        var probes = grid.Probes.Concat(DoorwayProbes.Build(opening, options)).ToArray();
-        var notes = new List<string>();
-        if (grid.Spacing != options.Spacing)
-            notes.Add(FormattableString.Invariant($"grid coarsened from {options.Spacing} m to {grid.Spacing} m to stay under {options.MaxGridProbes} probes"));
+        var laid = ChartProbes.Lay(reference, prepared, options);
+        var probes = laid.Probes;
 
         var referenceAnswers = Answers(reference, probes);
         var outcomes = new List<ModelOutcome>(models.Count);
@@ -52,7 +46,7 @@ public static class ChartRunner
             outcomes.Add(Compare(models[m].Name, prepared[m], reference, probes, referenceAnswers, answers, options, timer));
         }
         var cheapest = CheapestExact(outcomes);
-        return new ObjectChart(subject.Setup.Id, probes, grid.Spacing, everything, opening, referenceAnswers, outcomes, cheapest, notes);
+        return new ObjectChart(subject.Setup.Id, probes, laid.GridSpacing, laid.Bounds, laid.Doorway, referenceAnswers, outcomes, cheapest, laid.Notes);
     }
 
     /// <summary>Medians within this factor of the fastest exact model's count as the same cost (timing noise).</summary>
@@ -71,7 +65,7 @@ public static class ChartRunner
         return exact.First(o => o.Timing.MedianNs <= fastest * CostTieFactor).Model;
     }
 
-    private static PreparedModel Prepare(IShapeModel model, ChartSubject subject)
+    internal static PreparedModel Prepare(IShapeModel model, ChartSubject subject)
     {
         try
         {
@@ -84,7 +78,7 @@ public static class ChartRunner
         }
     }
 
-    private static bool[] Answers(PreparedModel model, Probe[] probes)
+    internal static bool[] Answers(PreparedModel model, Probe[] probes)
     {
         var answers = new bool[probes.Length];
         for (var i = 0; i < probes.Length; i++) answers[i] = model.Overlaps(probes[i].Center, probes[i].Radius);

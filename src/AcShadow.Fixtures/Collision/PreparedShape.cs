@@ -4,10 +4,15 @@ namespace AcShadow.Core.Collision;
 
 /// <summary>
 /// A shape the object query tests: where it came from, a readable name ("part 0 (GfxObj 0x010044B5)",
-/// "CylSphere 1", "Sphere 0"), its pose in entity space and, for a BSP shape, its compiled tree.
+/// "CylSphere 1", "Sphere 0"), its pose in entity space and, for a BSP shape, its compiled tree. A part
+/// modelled by a fitted solid instead carries it, in part space: <see cref="Box"/> (its faces also in
+/// <see cref="Polytope"/>) or <see cref="Polytope"/> alone (a convex hull).
 /// </summary>
 public sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose, CompiledBsp? Bsp)
 {
+    public AcShadow.Fixtures.Collision.OrientedBox? Box { get; init; }
+    public AcShadow.Fixtures.Collision.ConvexPolytope? Polytope { get; init; }
+
     public static string NameOf(ShadowShape s) => s.Source switch
     {
         _ when s.SourceIndex < 0 => "Setup Radius x Height",
