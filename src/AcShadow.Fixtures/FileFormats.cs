@@ -14,6 +14,7 @@ public static class FileFormats
     public const string Index = "acshadow.index/1";
     public const string Scene = "acshadow.scene/1";
     public const string Audit = "acshadow.audit/1";
+    public const string CompiledScene = "acshadow.compiled-scene/1";
 
     /// <summary>
     /// acdream's GfxObj fixture shape carries no format field (its field set is fixed by acdream); the
@@ -29,6 +30,8 @@ public static class FileFormats
             "one GfxObj's physics polygons, planes and PhysicsBSP tree"),
         new("scene", Scene, "scene.json", "urn:acshadow:schema:acshadow.scene-1",
             "a landblock's placed objects and buildings with world frames"),
+        new("compiled-scene", CompiledScene, "compiled-scene.json", "urn:acshadow:schema:acshadow.compiled-scene-1",
+            "a landblock compiled by `acshadow scene`: each object's cheapest exact model, its shapes and the evidence"),
         new("index", Index, "index.json", "urn:acshadow:schema:acshadow.index-1",
             "a batch's inputs and every file it wrote, with SHA-256"),
         new("audit", Audit, "(audit --format json --out FILE)", "urn:acshadow:schema:acshadow.audit-1",

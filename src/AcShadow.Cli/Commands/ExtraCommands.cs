@@ -11,6 +11,7 @@ public static class ExtraCommands
         yield return AuditCommand.Create(console);
         yield return VerifyCommand.Create(console);
         yield return ChartCommand.Create(console);
+        yield return SceneCommand.Create(console);
         yield return FormatsCommand.Create(console);
         yield return CompletionsCommand.Create(console);
     }

@@ -58,6 +58,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             _ when name.EndsWith(".bsp.json") => "bsp",
             _ when name.EndsWith(".gfxobj.json") => "acdream",
             "scene.json" => "scene",
+            "compiled-scene.json" => "compiled-scene",
             "index.json" => "index",
             "audit.json" => "audit",
             _ => throw new InvalidOperationException($"no format for {path}"),

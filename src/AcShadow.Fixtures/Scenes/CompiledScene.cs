@@ -1,0 +1,141 @@
+using System.Numerics;
+using System.Text.Json;
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Collision;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Collision;
+
+namespace AcShadow.Fixtures.Scenes;
+
+/// <summary>One placed object of a compiled scene: what it is, the model chosen for it and how many shapes that model tests.</summary>
+public sealed record CompiledObject(int Index, uint Id, string Kind, string? Model, int Shapes, Vector3 LandblockPosition, Quaternion LandblockRotation);
+
+/// <summary>
+/// compiled-scene.json (what <c>acshadow scene</c> writes) loaded: every object answered by the model the
+/// compiler chose for it — spheres, cylinders, part boxes, part convex hulls, or the part's retail BSP
+/// read from the dump beside it — with the same float operations the tool checked them with.
+/// <see cref="Query"/> takes landblock-relative centres.
+/// </summary>
+public sealed class CompiledScene
+{
+    public uint LandblockId { get; }
+    public IReadOnlyList<float> MoverRadii { get; }
+    public double TolerancePercent { get; }
+    public IReadOnlyList<CompiledObject> Objects { get; }
+    public SceneQuery Query { get; }
+
+    private CompiledScene(uint landblockId, IReadOnlyList<float> moverRadii, double tolerance, IReadOnlyList<CompiledObject> objects, SceneQuery query)
+    {
+        LandblockId = landblockId;
+        MoverRadii = moverRadii;
+        TolerancePercent = tolerance;
+        Objects = objects;
+        Query = query;
+    }
+
+    /// <summary>Does a sphere at this landblock-relative centre touch anything of the scene?</summary>
+    public bool Overlaps(Vector3 landblockCenter, float radius) => Query.Overlaps(landblockCenter, radius);
+
+    /// <summary>Loads <c>compiled-scene.json</c> from a folder <c>acshadow scene --out</c> wrote, with the BSP dumps it names.</summary>
+    public static CompiledScene Load(string folder)
+    {
+        var path = Path.Combine(folder, "compiled-scene.json");
+        if (!File.Exists(path))
+            throw new FileNotFoundException($"{path} is missing; generate it with `acshadow scene --landblock 0xXXYY --out {folder}`", path);
+        try
+        {
+            return Read(File.ReadAllText(path), file => BspFileReader.Read(File.ReadAllText(Path.Combine(folder, file))));
+        }
+        catch (FormatException e)
+        {
+            throw new FormatException($"{path}: {e.Message}", e);
+        }
+        catch (JsonException e)
+        {
+            throw new FormatException($"{path}: not JSON: {e.Message}", e);
+        }
+    }
+
+    /// <summary>From the file's text; <paramref name="bspFile"/> reads a BSP dump by its folder-relative path.</summary>
+    public static CompiledScene Read(string json, Func<string, BspDump> bspFile)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var root = doc.RootElement;
+        FormatCheck.Require(root, FileFormats.CompiledScene, "compiled-scene.json");
+        var trees = new Dictionary<string, ISphereOverlap>(StringComparer.Ordinal);
+        var objects = new List<CompiledObject>();
+        var queries = new List<PlacedQuery>();
+        foreach (var o in BspFileReader.Arr(root, "objects"))
+        {
+            var frame = BspFileReader.Prop(o, "landblockFrame");
+            var position = BspFileReader.Vec(BspFileReader.Prop(frame, "origin"));
+            var rotation = BspFileReader.Quat(BspFileReader.Prop(frame, "orientation"));
+            var model = BspFileReader.Prop(o, "model");
+            var shapes = BspFileReader.Arr(o, "shapes").Select(s => Shape(s, trees, bspFile)).ToArray();
+            var id = JsonIds.TryParse(BspFileReader.Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
+            var index = BspFileReader.Int(o, "index");
+            objects.Add(new CompiledObject(index, id, BspFileReader.Str(o, "kind"), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation));
+            var bound = BspFileReader.Prop(o, "bound");
+            if (shapes.Length == 0 || bound.ValueKind == JsonValueKind.Null) continue;
+            queries.Add(new PlacedQuery(index, id, position, rotation, new AnyOverlap(shapes),
+                BspFileReader.Vec(BspFileReader.Prop(bound, "center")), BspFileReader.Float(bound, "radius")));
+        }
+        var landblock = JsonIds.TryParse(BspFileReader.Str(root, "landblockId"), out var lb) ? lb : throw new FormatException("landblockId is not a hex id");
+        var radii = BspFileReader.Arr(root, "moverRadii").Select(BspFileReader.Number).ToArray();
+        return new CompiledScene(landblock, radii, BspFileReader.Prop(root, "tolerancePercent").GetDouble(), objects, new SceneQuery(queries));
+    }
+
+    private static ISphereOverlap Shape(JsonElement s, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
+    {
+        var type = BspFileReader.Str(s, "type");
+        switch (type)
+        {
+            case "sphere":
+                var center = BspFileReader.Vec(BspFileReader.Prop(s, "center"));
+                var r = BspFileReader.Float(s, "radius");
+                return new SphereShape(center, r);
+            case "cylinder":
+                return new CylinderShape(BspFileReader.Vec(BspFileReader.Prop(s, "base")), BspFileReader.Float(s, "radius"), BspFileReader.Float(s, "height"));
+        }
+        var pose = BspFileReader.Prop(s, "pose");
+        var partPose = new PartPose(BspFileReader.Vec(BspFileReader.Prop(pose, "position")), BspFileReader.Quat(BspFileReader.Prop(pose, "orientation")), BspFileReader.Float(pose, "scale"));
+        ISphereOverlap part = type switch
+        {
+            "box" => new BoxSphereQuery(new OrientedBox(BspFileReader.Vec(BspFileReader.Prop(s, "center")), BspFileReader.Quat(BspFileReader.Prop(s, "axes")),
+                BspFileReader.Vec(BspFileReader.Prop(s, "halfExtents")))),
+            "hull" => Hull(s),
+            "bsp" => Tree(BspFileReader.Str(s, "file"), trees, bspFile),
+            _ => throw new FormatException($"shape type \"{type}\" is not sphere, cylinder, box, hull or bsp"),
+        };
+        return new PosedQuery(partPose, part);
+    }
+
+    private static ConvexPolytope Hull(JsonElement s)
+    {
+        var vertices = BspFileReader.Arr(s, "vertices").Select(BspFileReader.Vec).ToArray();
+        var faces = BspFileReader.Arr(s, "faces").Select((f, i) =>
+        {
+            var corners = BspFileReader.Arr(f, "vertices").Select(e => e.GetInt32()).ToArray();
+            if (corners.Length < 3 || corners.Any(c => c < 0 || c >= vertices.Length)) throw new FormatException($"hull face {i}: vertex indices must name at least 3 of the hull's vertices");
+            return new CompiledPolygon(i, new Plane(BspFileReader.Vec(BspFileReader.Prop(f, "normal")), BspFileReader.Float(f, "d")), corners.Select(c => vertices[c]).ToArray());
+        }).ToArray();
+        return new ConvexPolytope(vertices, faces);
+    }
+
+    private static ISphereOverlap Tree(string file, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
+    {
+        if (!trees.TryGetValue(file, out var query))
+            trees[file] = query = new BspSphereQuery(CompiledBsp.Compile(bspFile(file)));
+        return query;
+    }
+
+    private sealed class SphereShape(Vector3 center, float radius) : ISphereOverlap
+    {
+        public bool Overlaps(Vector3 c, float r) => SphereBounds.IsValidProbe(c, r) && SphereSphereTest.Touches(center, radius, c, r);
+    }
+
+    private sealed class CylinderShape(Vector3 baseCenter, float radius, float height) : ISphereOverlap
+    {
+        public bool Overlaps(Vector3 c, float r) => SphereBounds.IsValidProbe(c, r) && CylinderSphereTest.Touches(baseCenter, radius, height, c, r);
+    }
+}
