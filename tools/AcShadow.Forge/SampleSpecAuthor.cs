@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
 
@@ -22,6 +23,9 @@ public static class SampleSpecAuthor
     public const uint BuildingSetup = 0x02005000, House = 0x01005000;
     public const uint OddSetup = 0x02006000, OddGfxObj = 0x01006000;
     public const uint Landblock = 0xA9B4FFFE;
+    public const uint CottageEnvironment = 0x0D000100, GroundFloorCell = 0xA9B40100, CellarCell = 0xA9B40101;
+    /// <summary>Where both cottage cells sit in the landblock: one origin, turned 90° about Z.</summary>
+    public static readonly Vector3 CottageOrigin = new(60, 60, 12);
 
     public static ForgeSpec Create() => new()
     {
@@ -223,9 +227,94 @@ public static class SampleSpecAuthor
                     new StabSpec { Id = Hex(StaticSetup), Origin = [100, 30, 11], Orientation = Z(-45) },
                 ],
                 Buildings = [new BuildingSpec { ModelId = Hex(House), Origin = [132, 108, 12], Orientation = Z(90), NumLeaves = 4 }],
+                Cells =
+                [
+                    new CellSpec
+                    {
+                        Comment = "cottage ground floor: door to the outside in its front wall (portal 0), stairwell down to the cellar (portal 1), the L-block Setup inside",
+                        Environment = Hex(CottageEnvironment),
+                        CellStruct = 0,
+                        Origin = [CottageOrigin.X, CottageOrigin.Y, CottageOrigin.Z],
+                        Orientation = Z(90),
+                        SeenOutside = true,
+                        Portals =
+                        [
+                            new CellPortalSpec { Polygon = 0, OtherCell = "outside", Flags = "PortalSide" },
+                            new CellPortalSpec { Polygon = 1, OtherCell = "0x0101", OtherPortal = 0, Flags = "ExactMatch" },
+                        ],
+                        VisibleCells = ["0x0101"],
+                        // Cell-local (-2.5, -2, 0), turned with the cell: landblock (60 + 2, 60 - 2.5, 12).
+                        Objects = [new StabSpec { Id = Hex(NoPlacementSetup), Origin = [62, 57.5, 12], Orientation = Z(90) }],
+                    },
+                    new CellSpec
+                    {
+                        Comment = "cottage cellar, 3 m below, reached by the ramp under the stairwell (portal 0 up to the ground floor)",
+                        Environment = Hex(CottageEnvironment),
+                        CellStruct = 1,
+                        Origin = [CottageOrigin.X, CottageOrigin.Y, CottageOrigin.Z],
+                        Orientation = Z(90),
+                        Portals = [new CellPortalSpec { Polygon = 0, OtherCell = "0x0100", OtherPortal = 1, Flags = "ExactMatch" }],
+                        VisibleCells = ["0x0100"],
+                    },
+                ],
+            },
+        ],
+        Environments =
+        [
+            new EnvironmentSpec
+            {
+                Id = Hex(CottageEnvironment),
+                Comment = "a cottage's two cell shapes, in one cell-local frame (x across, y deep, z up; the front wall at y = -2.5)",
+                CellStructs = [GroundFloor(), Cellar()],
             },
         ],
     };
+
+    /// <summary>
+    /// The ground floor, 6 x 5 m (x in [-3, 3], y in [-2.5, 2.5]): walls face into the room; the front
+    /// wall (y = -2.5, 3 m tall) has a 2 x 2.2 m door; the ceiling is one tilted polygon rising from 3 m at
+    /// the front to 3.5 m at the back; the floor leaves a 4 x 1.5 m stairwell (x in [-1, 3], y in [1, 2.5]).
+    /// Portals: the door, then the stairwell.
+    /// </summary>
+    private static CellStructSpec GroundFloor()
+    {
+        var m = new MeshBuilder();
+        m.Polygon([new(-3, -2.5f, 0), new(3, -2.5f, 0), new(3, 1, 0), new(-3, 1, 0)]);                 // floor before the stairwell
+        m.Polygon([new(-3, 1, 0), new(-1, 1, 0), new(-1, 2.5f, 0), new(-3, 2.5f, 0)]);                  // floor beside it
+        m.Polygon([new(-3, 2.5f, 0), new(3, 2.5f, 0), new(3, 2.5f, 3.5f), new(-3, 2.5f, 3.5f)]);         // back wall
+        m.Polygon([new(3, -2.5f, 0), new(3, -2.5f, 3), new(3, 2.5f, 3.5f), new(3, 2.5f, 0)]);            // right wall
+        m.Polygon([new(-3, -2.5f, 0), new(-3, 2.5f, 0), new(-3, 2.5f, 3.5f), new(-3, -2.5f, 3)]);        // left wall
+        m.Polygon([new(-3, -2.5f, 0), new(-3, -2.5f, 3), new(-1, -2.5f, 3), new(-1, -2.5f, 0)]);         // front wall, left of the door
+        m.Polygon([new(1, -2.5f, 0), new(1, -2.5f, 3), new(3, -2.5f, 3), new(3, -2.5f, 0)]);             // front wall, right of the door
+        m.Polygon([new(-1, -2.5f, 2.2f), new(-1, -2.5f, 3), new(1, -2.5f, 3), new(1, -2.5f, 2.2f)]);     // above the door
+        m.Polygon([new(-3, -2.5f, 3), new(-3, 2.5f, 3.5f), new(3, 2.5f, 3.5f), new(3, -2.5f, 3)]);       // tilted ceiling
+        var walls = m.PolygonCount;
+        m.Polygon([new(-1, -2.5f, 0), new(1, -2.5f, 0), new(1, -2.5f, 2.2f), new(-1, -2.5f, 2.2f)]);     // portal 0: the door
+        m.Polygon([new(-1, 1, 0), new(3, 1, 0), new(3, 2.5f, 0), new(-1, 2.5f, 0)]);                     // portal 1: the stairwell
+        return m.ToCellStructSpec(walls, "ground floor: 2 floor pieces, 3 walls, the front wall in 3 pieces around the door, a tilted ceiling; portals: door, stairwell");
+    }
+
+    /// <summary>
+    /// The cellar below (z in [-3, 0]): floor, four walls, the ceiling around the stairwell, and a ramp
+    /// under the stairwell from the floor at x = -1 up to z = 0 at the back-right wall (slope 3 in 4, normal
+    /// (-0.6, 0, 0.8): walkable), closed on its open side by a triangle. Portal: the stairwell.
+    /// </summary>
+    private static CellStructSpec Cellar()
+    {
+        var m = new MeshBuilder();
+        m.Polygon([new(-3, -2.5f, -3), new(3, -2.5f, -3), new(3, 2.5f, -3), new(-3, 2.5f, -3)]);        // floor
+        m.Polygon([new(-3, 2.5f, -3), new(3, 2.5f, -3), new(3, 2.5f, 0), new(-3, 2.5f, 0)]);            // back wall
+        m.Polygon([new(-3, -2.5f, -3), new(-3, -2.5f, 0), new(3, -2.5f, 0), new(3, -2.5f, -3)]);        // front wall
+        m.Polygon([new(3, -2.5f, -3), new(3, -2.5f, 0), new(3, 2.5f, 0), new(3, 2.5f, -3)]);            // right wall
+        m.Polygon([new(-3, -2.5f, -3), new(-3, 2.5f, -3), new(-3, 2.5f, 0), new(-3, -2.5f, 0)]);        // left wall
+        m.Polygon([new(-3, -2.5f, 0), new(-3, 1, 0), new(3, 1, 0), new(3, -2.5f, 0)]);                 // ceiling before the stairwell
+        m.Polygon([new(-3, 1, 0), new(-3, 2.5f, 0), new(-1, 2.5f, 0), new(-1, 1, 0)]);                  // ceiling beside it
+        m.Polygon([new(-1, 1, -3), new(3, 1, 0), new(3, 2.5f, 0), new(-1, 2.5f, -3)]);                  // ramp
+        m.Polygon([new(-1, 1, -3), new(3, 1, -3), new(3, 1, 0)]);                                        // ramp's side
+        var walls = m.PolygonCount;
+        m.Polygon([new(-1, 1, 0), new(-1, 2.5f, 0), new(3, 2.5f, 0), new(3, 1, 0)]);                     // portal 0: the stairwell
+        return m.ToCellStructSpec(walls, "cellar: floor, 4 walls, ceiling in 2 pieces, ramp and its side; portal: stairwell");
+    }
 
     private static string Hex(uint id) => $"0x{id:X8}";
 

@@ -4,10 +4,11 @@ using System.Globalization;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Output;
+using AcShadow.Core.Chart;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 

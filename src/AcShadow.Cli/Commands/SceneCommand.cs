@@ -5,8 +5,10 @@ using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Core.Scenes.Compile;
 
 namespace AcShadow.Cli.Commands;

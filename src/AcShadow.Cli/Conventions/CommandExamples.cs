@@ -20,6 +20,7 @@ public static class CommandExamples
             "acshadow dump --setup 0x020019FF",
             "acshadow dump --setup 0x020019FF --dat ~/ac/client_portal.dat --out my-fixtures --format both",
             "acshadow dump --setup 0x020019FF --policy union --out union-door",
+            "acshadow dump --cell 0xA9B40100 --out cottage --format both",
             "acshadow @dump-door.rsp",
         ],
         ["batch"] =
@@ -27,6 +28,7 @@ public static class CommandExamples
             "acshadow batch --doors --all --landblock 0xA9B4 --out my-fixtures",
             "acshadow batch --doors --out door-fixtures --format acdream --jobs 4",
             "acshadow batch --setups ids.txt --out fixtures --incremental --quiet",
+            "acshadow batch --landblock 0xA9B4 --no-cells --out outdoors",
         ],
         ["audit"] =
         [
@@ -48,6 +50,11 @@ public static class CommandExamples
         [
             "acshadow scene --landblock 0xA9B4 --out compiled-a9b4",
             "acshadow scene --landblock 0xA9B4 --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out compiled --mover-radius 0.48 --mover-radius 1.2 --tolerance 0.5",
+        ],
+        ["doctor"] =
+        [
+            "acshadow doctor",
+            "acshadow doctor --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out doctor.json",
         ],
         ["formats"] =
         [

@@ -3,6 +3,9 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Batch;
 
@@ -86,7 +89,8 @@ public static class BatchIndexReader
                 throw new FormatException($"{at}.landblock is not a landblock id");
             landblock = id;
         }
-        return new BatchSelection(Bool(e, "doors", at), Bool(e, "all", at), list, landblock);
+        var cells = !e.TryGetProperty("cells", out var c) || c.ValueKind != JsonValueKind.False;
+        return new BatchSelection(Bool(e, "doors", at), Bool(e, "all", at), list, landblock) { Cells = cells };
     }
 
     private static JsonElement Member(JsonElement e, string name, string at)

@@ -1,5 +1,6 @@
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 

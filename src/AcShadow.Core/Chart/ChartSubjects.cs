@@ -1,7 +1,9 @@
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 

@@ -1,5 +1,6 @@
 using System.Collections.Concurrent;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat;
 
@@ -35,6 +36,8 @@ public sealed class DatDatabase : IDatSource, IDisposable
     public Setup? ReadSetup(uint id) => Decode(id, DatObjectKind.Setup, Setup.Read, s => s.Id);
     public GfxObj? ReadGfxObj(uint id) => Decode(id, DatObjectKind.GfxObj, GfxObj.Read, g => g.Id);
     public LandBlockInfo? ReadLandBlockInfo(uint id) => Decode(id, DatObjectKind.LandBlockInfo, LandBlockInfo.Read, l => l.Id);
+    public EnvCell? ReadEnvCell(uint id) => Decode(id, DatObjectKind.EnvCell, EnvCell.Read, c => c.Id);
+    public CellEnvironment? ReadEnvironment(uint id) => Decode(id, DatObjectKind.Environment, CellEnvironment.Read, e => e.Id);
 
     public IReadOnlyList<uint> ListIds(DatObjectKind kind) =>
         _archive.Entries.Where(e => kind.Contains(e.Id)).Select(e => e.Id).ToArray();

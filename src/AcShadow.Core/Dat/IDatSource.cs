@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat;
 
@@ -15,6 +16,13 @@ public interface IDatSource
     Setup? ReadSetup(uint id);
     GfxObj? ReadGfxObj(uint id);
     LandBlockInfo? ReadLandBlockInfo(uint id);
+
+    /// <summary>An indoor cell (cell dat); null when the source has none (the default for sources without cells).</summary>
+    EnvCell? ReadEnvCell(uint id) => null;
+
+    /// <summary>An Environment (portal dat); null when the source has none.</summary>
+    CellEnvironment? ReadEnvironment(uint id) => null;
+
     IReadOnlyList<uint> ListIds(DatObjectKind kind);
 }
 

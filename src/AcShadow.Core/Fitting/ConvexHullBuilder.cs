@@ -1,7 +1,6 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Geometry;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Fitting;
 

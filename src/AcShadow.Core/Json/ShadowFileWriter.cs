@@ -1,5 +1,8 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Json;
 

@@ -1,4 +1,5 @@
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Scenes;
 
@@ -21,5 +22,10 @@ public static class SceneFileFormat
         _ => "other",
     };
 
-    public static string PlacedByName(ScenePlacedBy by) => by == ScenePlacedBy.Object ? "object" : "building";
+    public static string PlacedByName(ScenePlacedBy by) => by switch
+    {
+        ScenePlacedBy.Object => "object",
+        ScenePlacedBy.Building => "building",
+        _ => "cell",
+    };
 }

@@ -1,5 +1,6 @@
 using System.Globalization;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Scenes;
 

@@ -1,4 +1,6 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Shapes;
 

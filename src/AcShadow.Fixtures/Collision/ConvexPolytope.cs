@@ -1,5 +1,4 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
 
 namespace AcShadow.Fixtures.Collision;
 

@@ -1,6 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Fixtures.Collision;
 

@@ -1,6 +1,7 @@
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// A shape the object query tests: where it came from, a readable name ("part 0 (GfxObj 0x010044B5)",
@@ -10,8 +11,8 @@ namespace AcShadow.Core.Collision;
 /// </summary>
 public sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose, CompiledBsp? Bsp)
 {
-    public AcShadow.Fixtures.Collision.OrientedBox? Box { get; init; }
-    public AcShadow.Fixtures.Collision.ConvexPolytope? Polytope { get; init; }
+    public OrientedBox? Box { get; init; }
+    public ConvexPolytope? Polytope { get; init; }
 
     public static string NameOf(ShadowShape s) => s.Source switch
     {

@@ -1,9 +1,8 @@
 using System.Numerics;
 using System.Text.Json;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Fixtures.Scenes;
 

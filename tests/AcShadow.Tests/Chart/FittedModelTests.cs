@@ -1,11 +1,11 @@
 using System.Numerics;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Fitting;
 using AcShadow.Forge;
-using AcShadow.Fixtures.Collision;
 using AcShadow.Tests.Collision;
 using AcShadow.Tests.Support;
 

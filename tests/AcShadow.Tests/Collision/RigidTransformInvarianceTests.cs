@@ -1,7 +1,9 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.Collision;
 

@@ -63,7 +63,7 @@ public class SceneCompileTests
         Assert.Equal(retailParts, needed);
         var files = CompiledSceneFiles.Render(report, id => SampleChart.Subjects.Value.Bsps.Get(id) is null ? null
             : AcShadow.Core.Bsp.BspExtractor.Extract(SampleChart.Subjects.Value.GfxObj(id)!));
-        Assert.Equal(needed.Select(AcShadow.Core.Json.BspFileFormat.PathFor), files.Select(f => f.RelativePath).Where(p => p.StartsWith("gfxobjs/")));
+        Assert.Equal(needed.Select(AcShadow.Fixtures.Json.BspFileFormat.PathFor), files.Select(f => f.RelativePath).Where(p => p.StartsWith("gfxobjs/")));
     }
 
     [Fact]
@@ -103,7 +103,7 @@ public class SceneCompileTests
         var checkedProbes = 0;
         foreach (var placed in report.Scene.Objects)
         {
-            var frame = new AcShadow.Core.Collision.PartPose(placed.Frame.Origin, Quaternion.Normalize(placed.Frame.Orientation), 1f);
+            var frame = new AcShadow.Fixtures.Collision.PartPose(placed.Frame.Origin, Quaternion.Normalize(placed.Frame.Orientation), 1f);
             foreach (var p in report.For(placed)!.Probes)
             {
                 var at = frame.ToEntity(p.Center);

@@ -1,9 +1,10 @@
 using System.Diagnostics;
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Bench.Harness;
 

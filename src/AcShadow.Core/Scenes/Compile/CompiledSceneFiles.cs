@@ -1,7 +1,9 @@
 using System.Text;
 using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Scenes.Compile;
 

@@ -1,7 +1,9 @@
 using AcShadow.Core.Chart;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Scenes.Compile;
 

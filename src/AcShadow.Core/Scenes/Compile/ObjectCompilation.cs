@@ -1,6 +1,7 @@
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Scenes.Compile;
 

@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Text;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Scenes.Compile;
 

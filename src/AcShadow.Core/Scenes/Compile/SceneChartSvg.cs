@@ -1,5 +1,6 @@
 using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using static AcShadow.Core.Chart.Output.ChartFormat;
 
 namespace AcShadow.Core.Scenes.Compile;

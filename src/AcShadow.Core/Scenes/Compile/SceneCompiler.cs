@@ -1,9 +1,12 @@
 using System.Numerics;
+using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes.Compile;
@@ -104,7 +107,7 @@ public static class SceneCompiler
         foreach (var placed in scene.Objects)
         {
             if (compiled.GetValueOrDefault((placed.Kind, placed.Id)) is not { } c) continue;
-            var frame = new Collision.PartPose(placed.Frame.Origin, Normalised(placed.Frame.Orientation), 1f);
+            var frame = new PartPose(placed.Frame.Origin, Normalised(placed.Frame.Orientation), 1f);
             foreach (var p in c.Probes) positions.Add(p with { Center = frame.ToEntity(p.Center) });
         }
         int agree = 0, falsePass = 0, falseBlock = 0;
