@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using BenchmarkDotNet.Attributes;
 

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Text.Json;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
@@ -113,6 +114,8 @@ public static class SampleSpecAuthor
                 Radius = 0.17,
                 Height = 0.24,
                 Flags = ["HasPhysicsBsp"],
+                // Every hook type the public readers define, so the placement frames are read as real ones are.
+                Hooks = new Dictionary<string, IReadOnlyList<HookSpec>?> { ["Default"] = OpeningHooks(), ["Resting"] = ClosingHooks() },
             },
             new SetupSpec
             {
@@ -317,6 +320,59 @@ public static class SampleSpecAuthor
     }
 
     private static string Hex(uint id) => $"0x{id:X8}";
+
+    /// <summary>
+    /// Half of the hook types, with values a reader can get wrong: part indexes above 255, ReplaceObject ids in
+    /// the short (offset up to 0x7FFF) and long packed forms, every direction. NoOp is left out: neither public
+    /// reader can read past one.
+    /// </summary>
+    private static IReadOnlyList<HookSpec> OpeningHooks() =>
+    [
+        Hook("Sound", null, """{"soundId": "0x0A000123"}"""),
+        Hook("SoundTable", null, """{"soundType": 7}"""),
+        Hook("Attack", "Both", """{"partIndex": 300, "leftX": -0.5, "leftY": 1, "rightX": 0.5, "rightY": 1, "radius": 1.25, "height": 2}"""),
+        Hook("AnimationDone", null),
+        Hook("ReplaceObject", null, """{"partIndex": 300, "gfxObjId": "0x01000B21"}"""),
+        Hook("ReplaceObject", "Backward", """{"partIndex": 2, "gfxObjId": "0x0100C0DE"}"""),
+        Hook("Ethereal", null, """{"ethereal": true}"""),
+        Hook("TransparentPart", null, """{"partIndex": 1, "start": 0, "end": 0.5, "time": 1.5}"""),
+        Hook("Luminous", "Both", """{"start": 0, "end": 1, "time": 0.25}"""),
+        Hook("LuminousPart", null, """{"partIndex": 257, "start": 1, "end": 0, "time": 2}"""),
+        Hook("Diffuse", "Backward", """{"start": 0.5, "end": 1, "time": 3}"""),
+        Hook("DiffusePart", null, """{"partIndex": 3, "start": 0.25, "end": 0.75, "time": 1}"""),
+        Hook("Scale", null, """{"end": 1.5, "time": 0.5}"""),
+        Hook("CreateParticle", null, """{"emitterInfoId": "0x32000010", "partIndex": 0, "offset": {"origin": [0.5, 0, 1], "orientation": {"w": 0.70710677, "x": 0, "y": 0, "z": 0.70710677}}, "emitterId": 7}"""),
+    ];
+
+    /// <summary>The other half, and a long-form ReplaceObject at the smallest long offset (0x8000) last before the CylSpheres.</summary>
+    private static IReadOnlyList<HookSpec> ClosingHooks() =>
+    [
+        Hook("DestroyParticle", null, """{"emitterId": 7}"""),
+        Hook("StopParticle", "Both", """{"emitterId": 8}"""),
+        Hook("NoDraw", null, """{"noDraw": false}"""),
+        Hook("DefaultScript", null),
+        Hook("DefaultScriptPart", null, """{"partIndex": 511}"""),
+        Hook("CallPES", null, """{"scriptId": "0x33000005", "pause": 0.5}"""),
+        Hook("Transparent", "Backward", """{"start": 1, "end": 0, "time": 0.75}"""),
+        Hook("SoundTweaked", null, """{"soundId": "0x0A000200", "priority": 0.5, "probability": 0.25, "volume": 0.8}"""),
+        Hook("SetOmega", "Both", """{"axis": [0, 0, 1.5]}"""),
+        Hook("TextureVelocity", null, """{"uSpeed": 0.5, "vSpeed": -1}"""),
+        Hook("TextureVelocityPart", null, """{"partIndex": 300, "uSpeed": 0.25, "vSpeed": 0}"""),
+        Hook("SetLight", null, """{"lightsOn": true}"""),
+        Hook("CreateBlockingParticle", null, """{"emitterInfoId": "0x32000011", "partIndex": 1, "offset": {"origin": [0, 0, 0.5], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}}, "emitterId": 9}"""),
+        Hook("ReplaceObject", null, """{"partIndex": 0, "gfxObjId": "0x01008000"}"""),
+    ];
+
+    private static HookSpec Hook(string type, string? direction, string fields = "{}")
+    {
+        using var document = JsonDocument.Parse(fields);
+        return new HookSpec
+        {
+            Type = type,
+            Direction = direction,
+            Fields = document.RootElement.EnumerateObject().ToDictionary(p => p.Name, p => p.Value.Clone()),
+        };
+    }
 
     private static IReadOnlyDictionary<string, IReadOnlyList<FrameSpec>?> Place(params (string Name, FrameSpec[] Frames)[] placements) =>
         placements.ToDictionary(p => p.Name, p => (IReadOnlyList<FrameSpec>?)p.Frames);

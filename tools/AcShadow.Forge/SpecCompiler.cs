@@ -2,7 +2,6 @@ using System.Numerics;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Bsp;
 using AcShadow.Forge.Spec;
 
@@ -26,9 +25,10 @@ public static class SpecCompiler
     /// <summary>A fixed directory date keeps the bytes reproducible.</summary>
     public const uint RawDate = 0;
 
-    public static ForgedDats Compile(ForgeSpec spec) => Compile(SpecValidator.Validate(spec));
+    public static ForgedDats Compile(ForgeSpec spec, BranchFill fill = BranchFill.Zero) => Compile(SpecValidator.Validate(spec), fill);
 
-    public static ForgedDats Compile(ValidSpec spec)
+    /// <param name="fill">The directory's unused branch slots: retail's zeros, or DatReaderWriter's 0xCDCDCDCD.</param>
+    public static ForgedDats Compile(ValidSpec spec, BranchFill fill = BranchFill.Zero)
     {
         var gfxBytes = new byte[spec.GfxObjs.Count][];
         // BSP building dominates; each GfxObj is independent, and results land by index, so order is fixed.
@@ -38,14 +38,18 @@ public static class SpecCompiler
         for (var i = 0; i < gfxBytes.Length; i++) portal[spec.GfxObjs[i].Id] = gfxBytes[i];
         foreach (var setup in spec.Setups) portal[setup.Id] = Serialize(setup.Write);
         foreach (var environment in spec.Environments) portal[environment.Id] = Serialize(ToEnvironment(environment).Write);
-        var portalDat = DatArchiveWriter.Write(portal, new DatArchiveWriter.Options(DatFileKind.Portal, PortalBlockSize, spec.Iteration, RawDate));
+        // Real dats carry an Iteration record beside the header; it gives the same figure as the directory.
+        var iteration = Serialize(IterationRecord.Single(spec.Iteration).Write);
+        portal[IterationRecord.Id] = iteration;
+        var portalDat = DatArchiveWriter.Write(portal, new DatArchiveWriter.Options(DatFileKind.Portal, PortalBlockSize, spec.Iteration, RawDate, Fill: fill));
 
         byte[]? cellDat = null;
         if (spec.Landblocks.Count > 0)
         {
             var cell = spec.Landblocks.ToDictionary(l => l.Id, l => Serialize(l.Write));
             foreach (var envCell in spec.Cells) cell[envCell.Id] = Serialize(envCell.Write);
-            cellDat = DatArchiveWriter.Write(cell, new DatArchiveWriter.Options(DatFileKind.Cell, CellBlockSize, spec.Iteration, RawDate));
+            cell[IterationRecord.Id] = iteration;
+            cellDat = DatArchiveWriter.Write(cell, new DatArchiveWriter.Options(DatFileKind.Cell, CellBlockSize, spec.Iteration, RawDate, Fill: fill));
         }
         return new ForgedDats(portalDat, cellDat, spec.GfxObjs.Count, spec.Setups.Count, spec.Landblocks.Count) { EnvironmentCount = spec.Environments.Count, EnvCellCount = spec.Cells.Count };
     }

@@ -3,7 +3,6 @@ using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
 using AcShadow.Core.Shapes;
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Verify;
 
 namespace AcShadow.Cli.Commands;

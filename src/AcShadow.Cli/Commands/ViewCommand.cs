@@ -5,13 +5,13 @@ using System.Text.Json;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.View;
 using AcShadow.Fixtures;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 

@@ -51,6 +51,12 @@ public static class CommandExamples
             "acshadow scene --landblock 0xA9B4 --out compiled-a9b4",
             "acshadow scene --landblock 0xA9B4 --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out compiled --mover-radius 0.48 --mover-radius 1.2 --tolerance 0.5",
         ],
+        ["view"] =
+        [
+            "acshadow view --setup 0x020019FF --out v",
+            "acshadow view --fixtures fixtures --out v",
+            "acshadow view --setup 0x020019FF --chart chart-door --out v",
+        ],
         ["doctor"] =
         [
             "acshadow doctor",

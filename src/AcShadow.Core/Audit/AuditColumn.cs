@@ -1,6 +1,5 @@
 using System.Globalization;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Audit;
 

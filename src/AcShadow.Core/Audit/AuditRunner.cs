@@ -3,7 +3,6 @@ using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Audit;
 

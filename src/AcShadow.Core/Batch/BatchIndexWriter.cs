@@ -101,6 +101,7 @@ public static class BatchIndexWriter
         .Add("size", info.Size)
         .Add("kind", info.Kind.ToString())
         .Add("iteration", info.Iteration)
+        .Add("iterationSource", info.IterationSource.Name())
         .Add("blockSize", info.BlockSize);
 
     /// <summary>One file's entry, as index.json and incremental.json both record it.</summary>

@@ -50,11 +50,16 @@ public static class BatchPlanner
     {
         var cells = new List<Dat.Objects.EnvCell>();
         var missing = new List<SkippedCell>();
+        // A landblock cannot have more cells than the whole cell dat lists: a NumCells above that is damage
+        // (it would otherwise name tens of thousands of missing cells), refused as a corrupt dat.
+        var listed = cell.ListIds(DatObjectKind.EnvCell).ToHashSet();
+        if (info.NumCells > listed.Count)
+            throw new DatFormatException($"LandBlockInfo 0x{info.Id:X8} counts {info.NumCells} cells but the cell dat lists only {listed.Count} EnvCells");
         foreach (var id in LandblockScene.CellIds(info))
         {
             try
             {
-                if (cell.ReadEnvCell(id) is { } envCell) cells.Add(envCell);
+                if (listed.Contains(id) && cell.ReadEnvCell(id) is { } envCell) cells.Add(envCell);
                 else missing.Add(new SkippedCell(id, SkippedItem.NotInDat));
             }
             catch (DatFormatException e)

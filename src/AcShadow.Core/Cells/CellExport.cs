@@ -1,6 +1,5 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
-using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Cells;

@@ -1,16 +1,12 @@
 using AcShadow.Core.Batch;
-using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Core.Scenes;
-using AcShadow.Core.Shapes;
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Cells;
 

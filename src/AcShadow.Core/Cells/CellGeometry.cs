@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Cells;

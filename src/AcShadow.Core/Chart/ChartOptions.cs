@@ -33,7 +33,7 @@ public sealed record ChartOptions
     /// <summary>Grid probes at most; a larger grid is coarsened (spacing doubled until it fits) and says so.</summary>
     public int MaxGridProbes { get; init; } = 250_000;
 
-    /// <summary>Disagreements listed per model and object, nearest the boundary first.</summary>
+    /// <summary>False passes and, separately, false blocks listed per model and object, nearest the boundary first.</summary>
     public int FailuresPerModel { get; init; } = 10;
 
     /// <summary>Probes in the timed sample (evenly strided over all probes).</summary>

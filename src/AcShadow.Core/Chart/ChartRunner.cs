@@ -103,7 +103,10 @@ public static class ChartRunner
             var p = probes[i];
             disagreements.Add(new Disagreement(i, p, pass, BoundaryGap.Of(reference.Shapes, p.Center, p.Radius), BoundaryGap.Of(model.Shapes, p.Center, p.Radius)));
         }
-        var nearest = disagreements.OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel).ToArray();
+        // The nearest of each kind, so false blocks hugging the boundary (stability probes) never crowd out a false pass.
+        var nearest = disagreements.Where(d => d.FalsePass).OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel)
+            .Concat(disagreements.Where(d => !d.FalsePass).OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel))
+            .OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).ToArray();
         var timing = timer.Measure(name, model, probes, options);
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
     }

@@ -1,7 +1,5 @@
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Dat;
 using AcShadow.Fixtures.Collision;
 

@@ -1,6 +1,5 @@
 using System.Collections.Concurrent;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat;
 
@@ -22,8 +21,12 @@ public sealed class DatDatabase : IDatSource, IDisposable
         if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
         _archive = archive;
         _capacity = cacheCapacity;
-        // The iteration needs the whole directory: read only when something asks (a dump never does).
-        _info = new Lazy<DatSourceInfo>(() => new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize));
+        // Read only when something asks (a dump never does): the fallback needs the whole directory.
+        _info = new Lazy<DatSourceInfo>(() =>
+        {
+            var (iteration, source) = DatIteration.Of(archive);
+            return new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, iteration, archive.Header.BlockSize) { IterationSource = source };
+        });
     }
 
     private readonly Lazy<DatSourceInfo> _info;

@@ -1,5 +1,4 @@
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat;
 
@@ -27,4 +26,8 @@ public interface IDatSource
 }
 
 /// <summary>What identifies the dat a result came from (recorded in index.json).</summary>
-public sealed record DatSourceInfo(string FileName, long Size, DatFileKind Kind, int Iteration, int BlockSize);
+public sealed record DatSourceInfo(string FileName, long Size, DatFileKind Kind, int Iteration, int BlockSize)
+{
+    /// <summary>Where <see cref="Iteration"/> came from.</summary>
+    public DatIterationSource IterationSource { get; init; } = DatIterationSource.Directory;
+}

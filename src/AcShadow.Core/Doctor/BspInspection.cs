@@ -42,14 +42,9 @@ internal static class BspInspection
         }
         t.PolygonVertexMissing.Add(gfx.Id, missingVertices);
 
-        var scan = new TreeScan(t, polygons, planes, resolved);
-        scan.Visit(root);
-        t.OneChildNode.Add(gfx.Id, scan.OneChild);
-        t.PlaneNotReproduced.Add(gfx.Id, scan.PlanesMissed);
-        t.SolidLeafEmpty.Add(gfx.Id, scan.SolidEmpty);
-        t.SolidFlagOddValue.Add(gfx.Id, scan.OddSolid);
-        t.LeafPolygonMissing.Add(gfx.Id, scan.MissingPolygons);
-        t.SphereTooSmall.Add(gfx.Id, scan.SpheresTooSmall);
+        var scan = new TreeScan(polygons, planes, resolved);
+        scan.Visit(root, 0);
+        scan.AddTo(gfx.Id, t);
     }
 
     private static Vector3[]? Points(GfxObj gfx, Polygon polygon)
@@ -64,51 +59,71 @@ internal static class BspInspection
         (BitConverter.SingleToInt32Bits(p.Normal.X), BitConverter.SingleToInt32Bits(p.Normal.Y),
          BitConverter.SingleToInt32Bits(p.Normal.Z), BitConverter.SingleToInt32Bits(p.D));
 
-    private sealed class TreeScan(DoctorTallies t, Dictionary<ushort, Vector3[]?> polygons,
-        HashSet<(int, int, int, int)> planes, List<(Vector3[] Points, Plane Plane)> resolved)
+    /// <summary>One tree's walk: counts kept locally and added to the shared tallies once per GfxObj.</summary>
+    private sealed class TreeScan(Dictionary<ushort, Vector3[]?> polygons, HashSet<(int, int, int, int)> planes, List<(Vector3[] Points, Plane Plane)> resolved)
     {
-        public long OneChild, PlanesMissed, SolidEmpty, OddSolid, MissingPolygons, SpheresTooSmall;
+        /// <summary>The decoder refuses trees deeper than 256 levels.</summary>
+        private const int MaxDepth = 258;
 
-        /// <summary>Checks the subtree and returns the polygons its leaves hold (for the spheres above it).</summary>
-        public List<Vector3[]> Visit(PhysicsBspNode node)
+        // The spheres of the nodes from the root down to the one being visited, and the farthest squared
+        // distance from each centre of any vertex below it so far: a vertex updates every sphere above it.
+        private readonly Vector3[] _centres = new Vector3[MaxDepth];
+        private readonly double[] _farthest = new double[MaxDepth];
+
+        private long _internal, _leaves, _oneChild, _reproduced, _missed, _negated, _withoutPolygon;
+        private long _solidWithPolygons, _solidEmpty, _openWithPolygons, _openEmpty, _oddSolid, _polygonRefs, _missingPolygons;
+        private long _spheres, _containing, _withinSlack, _tooSmall, _maxExcessNanometres;
+        private readonly List<long> _ulps = [];
+
+        public void Visit(PhysicsBspNode node, int depth)
         {
-            List<Vector3[]> held;
+            _centres[depth] = node.BoundingSphere.Center;
+            _farthest[depth] = -1;
             if (node.IsLeaf)
             {
-                t.Leaves.Add();
-                held = new List<Vector3[]>(node.Polygons.Count);
+                _leaves++;
                 foreach (var p in node.Polygons)
                 {
-                    t.LeafPolygonRefs.Add();
-                    if (!polygons.TryGetValue(p, out var points)) MissingPolygons++;
-                    else if (points is not null) held.Add(points);
+                    _polygonRefs++;
+                    if (!polygons.TryGetValue(p, out var points)) _missingPolygons++;
+                    else if (points is not null) Reach(points, depth);
                 }
                 var has = node.Polygons.Count > 0;
                 switch (node.Solid)
                 {
-                    case 1 when has: t.SolidWithPolygons.Add(); break;
-                    case 1: t.SolidEmpty.Add(); SolidEmpty++; break;
-                    case 0 when has: t.OpenWithPolygons.Add(); break;
-                    case 0: t.OpenEmpty.Add(); break;
-                    default: OddSolid++; break;
+                    case 1 when has: _solidWithPolygons++; break;
+                    case 1: _solidEmpty++; break;
+                    case 0 when has: _openWithPolygons++; break;
+                    case 0: _openEmpty++; break;
+                    default: _oddSolid++; break;
                 }
             }
             else
             {
-                t.InternalNodes.Add();
-                if (node.Pos is null || node.Neg is null) OneChild++;
+                _internal++;
+                if (node.Pos is null || node.Neg is null) _oneChild++;
                 CheckPlane(node.SplittingPlane);
-                held = node.Pos is { } pos ? Visit(pos) : [];
-                if (node.Neg is { } neg) held.AddRange(Visit(neg));
+                if (node.Pos is { } pos) Visit(pos, depth + 1);
+                if (node.Neg is { } neg) Visit(neg, depth + 1);
             }
-            CheckSphere(node.BoundingSphere, held);
-            return held;
+            CheckSphere(node.BoundingSphere.Radius, depth);
+        }
+
+        private void Reach(Vector3[] points, int depth)
+        {
+            foreach (var v in points)
+                for (var k = 0; k <= depth; k++)
+                {
+                    double dx = v.X - _centres[k].X, dy = v.Y - _centres[k].Y, dz = v.Z - _centres[k].Z;
+                    var d = dx * dx + dy * dy + dz * dz;
+                    if (d > _farthest[k] || double.IsNaN(d)) _farthest[k] = d;
+                }
         }
 
         private void CheckPlane(Plane stored)
         {
-            if (planes.Contains(Bits(stored))) { t.PlanesReproduced.Add(); return; }
-            PlanesMissed++;
+            if (planes.Contains(Bits(stored))) { _reproduced++; return; }
+            _missed++;
             // The nearest make_plane among the polygons lying in the stored plane, in ULPs of its worst component.
             long best = long.MaxValue;
             var negated = false;
@@ -118,9 +133,9 @@ internal static class BspInspection
                 if (Bits(Negate(plane)) == Bits(stored)) { negated = true; break; }
                 best = Math.Min(best, Ulps(plane, stored));
             }
-            if (negated) t.PlanesNegated.Add();
-            else if (best == long.MaxValue) t.PlanesWithoutPolygon.Add();
-            else t.PlaneUlps.Add(best);
+            if (negated) _negated++;
+            else if (best == long.MaxValue) _withoutPolygon++;
+            else _ulps.Add(best);
         }
 
         private static Plane Negate(Plane p) => new(-p.Normal, -p.D);
@@ -136,22 +151,43 @@ internal static class BspInspection
             return true;
         }
 
-        private void CheckSphere(Sphere sphere, List<Vector3[]> held)
+        /// <summary>Whether the node's sphere holds every vertex below it; a node with no polygons below has nothing to hold.</summary>
+        private void CheckSphere(float radius, int depth)
         {
-            if (held.Count == 0) return;
-            t.SpheresChecked.Add();
-            var worst = double.NegativeInfinity;
-            foreach (var points in held)
-                foreach (var v in points)
-                {
-                    double dx = v.X - sphere.Center.X, dy = v.Y - sphere.Center.Y, dz = v.Z - sphere.Center.Z;
-                    worst = Math.Max(worst, Math.Sqrt(dx * dx + dy * dy + dz * dz) - sphere.Radius);
-                }
-            if (double.IsNaN(worst)) { SpheresTooSmall++; return; }
-            if (worst <= 0) { t.SpheresExactlyContaining.Add(); return; }
-            t.ObserveExcess(double.IsFinite(worst) ? (long)Math.Ceiling(Math.Min(worst, 1e6) * 1e9) : long.MaxValue);
-            if (worst <= SphereSlackMetres) t.SpheresWithinSlack.Add();
-            else SpheresTooSmall++;
+            var farthest = _farthest[depth];
+            if (farthest < 0) return;
+            _spheres++;
+            var worst = Math.Sqrt(farthest) - radius;
+            if (double.IsNaN(worst)) { _tooSmall++; return; }
+            if (worst <= 0) { _containing++; return; }
+            _maxExcessNanometres = Math.Max(_maxExcessNanometres, double.IsFinite(worst) ? (long)Math.Ceiling(Math.Min(worst, 1e6) * 1e9) : long.MaxValue);
+            if (worst <= SphereSlackMetres) _withinSlack++;
+            else _tooSmall++;
+        }
+
+        public void AddTo(uint id, DoctorTallies t)
+        {
+            t.InternalNodes.Add(_internal);
+            t.Leaves.Add(_leaves);
+            t.OneChildNode.Add(id, _oneChild);
+            t.PlanesReproduced.Add(_reproduced);
+            t.PlaneNotReproduced.Add(id, _missed);
+            t.PlanesNegated.Add(_negated);
+            t.PlanesWithoutPolygon.Add(_withoutPolygon);
+            foreach (var u in _ulps) t.PlaneUlps.Add(u);
+            t.SolidWithPolygons.Add(_solidWithPolygons);
+            t.SolidEmpty.Add(_solidEmpty);
+            t.OpenWithPolygons.Add(_openWithPolygons);
+            t.OpenEmpty.Add(_openEmpty);
+            t.SolidLeafEmpty.Add(id, _solidEmpty);
+            t.SolidFlagOddValue.Add(id, _oddSolid);
+            t.LeafPolygonRefs.Add(_polygonRefs);
+            t.LeafPolygonMissing.Add(id, _missingPolygons);
+            t.SpheresChecked.Add(_spheres);
+            t.SpheresExactlyContaining.Add(_containing);
+            t.SpheresWithinSlack.Add(_withinSlack);
+            t.SphereTooSmall.Add(id, _tooSmall);
+            if (_maxExcessNanometres > 0) t.ObserveExcess(_maxExcessNanometres);
         }
     }
 }

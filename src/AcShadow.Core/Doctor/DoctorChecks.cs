@@ -1,7 +1,6 @@
 using System.Globalization;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Doctor;
 
@@ -15,6 +14,8 @@ internal static class DoctorChecks
         Decode(t, cell is not null),
         BytesUsed(t),
         Hooks(t),
+        Directory(portal, cell),
+        Iteration(portal, cell),
         Header(portal, cell),
         Planes(t),
         BothChildren(t),
@@ -70,6 +71,35 @@ internal static class DoctorChecks
             $"{N(t.PlacementHooks.Value)} hook(s) of {N(byType.Count)} type(s) read, {N(unknown)} setup(s) with an unknown type",
             [C("hooks", t.PlacementHooks.Value), C("types", byType.Count), C("setupsWithUnknownType", unknown)],
             t.UnknownHookType.Examples, "setup") { Histogram = byType, HistogramName = "hooksByType" };
+    }
+
+    private static DoctorCheck Directory(DatArchive portal, DatArchive? cell)
+    {
+        var archives = cell is null ? new[] { portal } : [portal, cell];
+        var shapes = archives.Select(a => a.DirectoryShape).ToArray();
+        var fill = shapes.Aggregate(BranchFill.None, (f, s) => f.Combine(s.Fill));
+        var notRetail = shapes.Count(s => s.Fill is not (BranchFill.Zero or BranchFill.None));
+        List<KeyValuePair<string, long>> counts = [C("nodes", shapes[0].Nodes), C("levels", shapes[0].Levels)];
+        if (cell is not null) counts.AddRange([C("cellNodes", shapes[1].Nodes), C("cellLevels", shapes[1].Levels)]);
+        counts.Add(C("filesNotRetailStyle", notRetail));
+        return new DoctorCheck("reading.directory", Reading,
+            "the directory B-tree is retail's style: unused branch slots hold 0 (DatReaderWriter writes 0xCDCDCDCD, which acshadow also reads)",
+            DoctorVerdicts.Of(shapes.Sum(s => s.Nodes), notRetail), $"branch fill {fill.Describe()}, {N(shapes.Sum(s => s.Nodes))} node(s)",
+            counts, [], "object") { Histogram = [.. Enum.GetValues<BranchFill>().Select(f => C(f.ToString(), shapes.Count(s => s.Fill == f)))], HistogramName = "filesByFill" };
+    }
+
+    private static DoctorCheck Iteration(DatArchive portal, DatArchive? cell)
+    {
+        var archives = cell is null ? new[] { portal } : [portal, cell];
+        var found = archives.Select(DatIteration.Of).ToArray();
+        var missing = found.Count(f => f.Source != DatIterationSource.Record);
+        List<KeyValuePair<string, long>> counts = [C("iteration", found[0].Iteration), C("maxEntryIteration", portal.MaxIteration)];
+        if (cell is not null) counts.AddRange([C("cellIteration", found[1].Iteration), C("cellMaxEntryIteration", cell.MaxIteration)]);
+        counts.Add(C("filesWithoutReadableRecord", missing));
+        return new DoctorCheck("reading.iteration", Reading,
+            $"each dat carries a readable Iteration record (0x{IterationRecord.Id:X8}), as real dats do",
+            DoctorVerdicts.Of(archives.Length, missing), $"iteration {N(found[0].Iteration)} from the {found[0].Source.Describe()}",
+            counts, [], "object") { Histogram = [.. Enum.GetValues<DatIterationSource>().Select(f => C(f.Name(), found.Count(x => x.Source == f)))], HistogramName = "filesByIterationSource" };
     }
 
     private static DoctorCheck Header(DatArchive portal, DatArchive? cell)

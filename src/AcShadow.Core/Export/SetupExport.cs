@@ -1,5 +1,4 @@
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 

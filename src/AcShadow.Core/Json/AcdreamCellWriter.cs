@@ -1,9 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Cells;
 
 namespace AcShadow.Core.Json;

@@ -1,6 +1,5 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Scenes;
 

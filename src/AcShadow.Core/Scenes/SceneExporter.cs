@@ -1,6 +1,5 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;

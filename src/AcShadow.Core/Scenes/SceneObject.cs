@@ -1,5 +1,4 @@
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Scenes;
 

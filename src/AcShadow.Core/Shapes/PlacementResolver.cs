@@ -1,5 +1,4 @@
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Shapes;

@@ -1,10 +1,10 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.View;

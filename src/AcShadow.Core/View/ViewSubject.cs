@@ -1,6 +1,6 @@
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.View;

@@ -1,13 +1,12 @@
 using System.Text.Json;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.View;

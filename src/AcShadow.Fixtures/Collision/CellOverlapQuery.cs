@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Fixtures.Collision;
 
@@ -16,7 +15,7 @@ public sealed class CellOverlapQuery : ISphereOverlap
     private readonly PartPose _frame;
     private readonly BspSphereQuery _bsp;
 
-    /// <param name="physics">The cell structure's physics polygons and PhysicsBSP.</param>
+    /// <param name="physics">The cell structure's physics polygons and PhysicsBSP, in the cell's own frame.</param>
     /// <param name="origin">The cell's origin in the frame the queries use (landblock-relative, as the dat stores it).</param>
     /// <param name="orientation">The cell's rotation in that frame.</param>
     public CellOverlapQuery(BspDump physics, Vector3 origin, Quaternion orientation)

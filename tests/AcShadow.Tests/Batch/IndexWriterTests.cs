@@ -2,7 +2,6 @@ using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 

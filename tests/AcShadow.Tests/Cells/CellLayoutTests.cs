@@ -2,7 +2,6 @@ using System.Numerics;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Cells;
 

@@ -71,8 +71,12 @@ public class DoorChartTests
     public void Failures_list_the_disagreements_nearest_the_boundary_first()
     {
         var fallback = Model("fallback-cylinder");
-        Assert.Equal(SampleChart.DoorOnly.Options.FailuresPerModel, fallback.Nearest.Count);
-        for (var k = 1; k < fallback.Nearest.Count; k++) Assert.True(fallback.Nearest[k - 1].Nearness <= fallback.Nearest[k].Nearness);
+        var k = SampleChart.DoorOnly.Options.FailuresPerModel;
+        Assert.Equal(Math.Min(k, fallback.FalsePass) + Math.Min(k, fallback.FalseBlock), fallback.Nearest.Count);
+        // Stability probes put many false blocks within 0.1 mm of the boundary; the false passes still show.
+        Assert.True(fallback.FalsePass > 0);
+        Assert.Equal(Math.Min(k, fallback.FalsePass), fallback.Nearest.Count(d => d.FalsePass));
+        for (var n = 1; n < fallback.Nearest.Count; n++) Assert.True(fallback.Nearest[n - 1].Nearness <= fallback.Nearest[n].Nearness);
         var csv = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "failures.csv").Content);
         Assert.StartsWith(FailuresCsv.Header + "\n", csv);
         Assert.Contains("0x020019FF,fallback-cylinder,1,", csv);

@@ -1,7 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Dat;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Forge.Bsp;

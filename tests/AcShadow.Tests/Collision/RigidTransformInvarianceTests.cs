@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Shapes;

@@ -1,6 +1,5 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Doctor;
 using AcShadow.Tests.Support;
 

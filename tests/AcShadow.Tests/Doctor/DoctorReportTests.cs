@@ -1,11 +1,10 @@
 using System.Numerics;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Bsp;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Doctor;
 using AcShadow.Forge;
 using AcShadow.Tests.Support;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Tests.Doctor;
 
@@ -40,7 +39,6 @@ public sealed class DoctorReportTests
                 Assert.Equal(ids.Order(), check.Examples);
             }
             else if (check.Key is "tool.determinism") Assert.Equal(DoctorVerdict.NotChecked, check.Verdict);
-            else if (check.Key is "bsp.both-children") Assert.NotEqual(DoctorVerdict.NotApplicable, check.Verdict);
             else Assert.True(check.Verdict == DoctorVerdict.Holds, $"{check.Key}: {check.Verdict.Text()} ({check.Headline})");
         }
         var planes = report.Check("bsp.planes");
@@ -128,6 +126,7 @@ public sealed class DoctorReportTests
     public void Known_hook_types_are_counted_by_type()
     {
         var objects = DoctorDats.SampleObjects();
+        var before = DoctorDats.Report(DoctorDats.Portal(objects)).Check("reading.hooks").Histogram!.ToDictionary();
         var door = DoctorDats.ReadSetup(objects, 0x020019FF);
         var placement = door.PlacementFrames[0] with
         {
@@ -138,7 +137,35 @@ public sealed class DoctorReportTests
         var check = DoctorDats.Report(DoctorDats.Portal(objects)).Check("reading.hooks");
 
         Assert.Equal(DoctorVerdict.Holds, check.Verdict);
-        Assert.Equal([new("Sound", 2L), new KeyValuePair<string, long>("NoDraw", 1)], check.Histogram);
+        var added = check.Histogram!.Select(h => (h.Key, h.Value - before.GetValueOrDefault(h.Key))).Where(h => h.Item2 != 0);
+        Assert.Equal([("Sound", 2L), ("NoDraw", 1L)], added);
+    }
+
+    [Fact]
+    public void A_directory_written_as_DatReaderWriter_writes_it_differs_from_retail_style()
+    {
+        var objects = DoctorDats.SampleObjects();
+        var report = DoctorDats.Report(DatArchiveWriter.Write(objects, new DatArchiveWriter.Options(DatFileKind.Portal, Fill: BranchFill.Cdcd)));
+
+        var check = report.Check("reading.directory");
+        Assert.Equal(DoctorVerdict.Differs, check.Verdict);
+        Assert.Contains("0xCDCDCDCD", check.Headline);
+        Assert.Equal(1, check.Histogram!.Single(h => h.Key == nameof(BranchFill.Cdcd)).Value);
+        // Everything else reads as from the retail-style copy.
+        Assert.Equal(DoctorVerdict.Holds, report.Check("reading.decode").Verdict);
+        Assert.Equal(DoctorVerdict.Holds, DoctorDats.Report(DoctorDats.Portal(objects)).Check("reading.directory").Verdict);
+    }
+
+    [Fact]
+    public void A_dat_without_its_iteration_record_differs()
+    {
+        var objects = DoctorDats.SampleObjects();
+        Assert.True(objects.Remove(IterationRecord.Id));
+
+        var check = DoctorDats.Report(DoctorDats.Portal(objects)).Check("reading.iteration");
+
+        Assert.Equal(DoctorVerdict.Differs, check.Verdict);
+        Assert.Equal(1, Count(check, "filesWithoutReadableRecord"));
     }
 
     [Fact]

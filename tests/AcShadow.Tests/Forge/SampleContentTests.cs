@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;

@@ -1,8 +1,6 @@
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Forge;
 
 namespace AcShadow.Tests.Json;

@@ -1,6 +1,5 @@
 using System.Text;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Tests.Json;
 

@@ -1,7 +1,6 @@
 using System.Globalization;
 using System.Text;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Tests.Json;
 

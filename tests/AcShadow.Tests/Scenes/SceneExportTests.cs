@@ -3,7 +3,6 @@ using System.Text.Json;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Scenes;
 using AcShadow.Tests.Support;
 using static AcShadow.Tests.Batch.BatchRuns;

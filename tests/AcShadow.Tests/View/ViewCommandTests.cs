@@ -1,15 +1,16 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.Numerics;
-using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Shapes;
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.View;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Fixtures;
 using AcShadow.Tests.Support;
 using SharpGLTF.Schema2;
 using SharpGLTF.Validation;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.View;
 

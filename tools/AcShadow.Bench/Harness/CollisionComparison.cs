@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Fixtures.Collision;

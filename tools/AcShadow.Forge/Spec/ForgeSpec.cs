@@ -1,3 +1,4 @@
+using System.Text.Json;
 using System.Text.Json.Serialization;
 using AcShadow.Fixtures.Bsp;
 
@@ -67,6 +68,19 @@ public sealed record SetupSpec
     public IReadOnlyList<string> Flags { get; set; } = [];
     /// <summary>Part ids deliberately left out of the dat.</summary>
     public IReadOnlyList<string> MissingParts { get; set; } = [];
+    /// <summary>Placement name (one of <see cref="Placements"/>) → the animation hooks its frame carries.</summary>
+    public IReadOnlyDictionary<string, IReadOnlyList<HookSpec>?> Hooks { get; set; } = new Dictionary<string, IReadOnlyList<HookSpec>?>();
+}
+
+/// <summary>One animation hook: its type, direction and payload fields by name (docs/formats.md lists each type's fields).</summary>
+public sealed record HookSpec
+{
+    /// <summary>An <see cref="Core.Dat.Objects.AnimationHookType"/> name.</summary>
+    public string? Type { get; set; }
+    /// <summary>"Forward" (1, the default), "Backward" (-1) or "Both" (0).</summary>
+    public string? Direction { get; set; }
+    /// <summary>Field name → value: a number, true/false, a hex id string, [x, y, z], or a frame {origin, orientation}.</summary>
+    public IReadOnlyDictionary<string, JsonElement> Fields { get; set; } = new Dictionary<string, JsonElement>();
 }
 
 public sealed record FrameSpec

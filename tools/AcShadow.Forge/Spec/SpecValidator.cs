@@ -153,6 +153,15 @@ public static class SpecValidator
                 throw new SpecException($"{where}: placement \"{name}\" has {frames.Count} frame(s) but the setup has {parts.Length} part(s); the dat stores exactly one frame per part, so give {parts.Length}");
             placements.Add(new PlacementFrame(key, frames.Select((f, i) => Frame(f, $"{where} placement \"{name}\" frame {i}")).ToArray()));
         }
+        foreach (var (name, hookSpecs) in s.Hooks ?? new Dictionary<string, IReadOnlyList<HookSpec>?>())
+        {
+            var index = Placement.TryParse(name, out var key) ? placements.FindIndex(p => p.Placement == key) : -1;
+            if (index < 0) throw new SpecException($"{where}: hooks names placement \"{name}\", which is not one of its placements; hooks belong to a placement's frame");
+            placements[index] = placements[index] with
+            {
+                Hooks = (hookSpecs ?? []).Select((h, i) => HookValidator.Validate(h, $"{where} hooks \"{name}\"[{i}]")).ToArray(),
+            };
+        }
 
         var cyls = (s.CylSpheres ?? []).Select((c, i) =>
         {

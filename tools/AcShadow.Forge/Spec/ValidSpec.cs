@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Forge.Spec;
 

@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Geometry;
+
 namespace AcShadow.Core.Chart.Models;
 
 /// <summary>

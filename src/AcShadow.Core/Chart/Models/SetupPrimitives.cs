@@ -1,8 +1,9 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart.Models;

@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Geometry;
+
 namespace AcShadow.Core.Chart.Models;
 
 /// <summary>The Setup's own primitives only: every CylSphere as a cylinder and every Sphere as a sphere, no BSP.</summary>

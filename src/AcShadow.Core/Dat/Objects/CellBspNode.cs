@@ -1,6 +1,5 @@
-using System.Numerics;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Fixtures.Geometry;
+using System.Numerics;
 
 namespace AcShadow.Core.Dat.Objects;
 

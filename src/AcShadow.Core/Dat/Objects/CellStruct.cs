@@ -1,3 +1,4 @@
+using AcShadow.Fixtures.Bsp;
 using System.Numerics;
 
 namespace AcShadow.Core.Dat.Objects;
@@ -26,7 +27,7 @@ public sealed record CellStruct(
         var polygonCount = r.ReadUInt32();
         var physicsCount = r.ReadUInt32();
         var portalCount = r.ReadUInt32();
-        var vertices = ReadVertices(r);
+        var vertices = VertexArrayLayout.Read(r);
         var polygons = ReadPolygons(r, polygonCount, "polygon");
         var portals = new ushort[r.ReadCount(portalCount, 2, "portal")];
         for (var i = 0; i < portals.Length; i++) portals[i] = r.ReadUInt16();
@@ -38,24 +39,6 @@ public sealed record CellStruct(
         if (hasDrawing) DrawingBsp.Skip(r);
         r.Align(4);
         return new CellStruct(vertices, polygons, portals, cellBsp, physics, physicsBsp, hasDrawing);
-    }
-
-    /// <summary>The SW vertex array, as in a GfxObj: type 1, a uint count, then id, UV count, origin, normal, UVs.</summary>
-    private static Dictionary<ushort, Vector3> ReadVertices(DatBinaryReader r)
-    {
-        var vertexType = r.ReadInt32();
-        if (vertexType != 1) throw new DatFormatException($"vertex type {vertexType} is not the SW vertex type (1)");
-        var count = r.ReadCount(r.ReadUInt32(), 28, "vertex");
-        var vertices = new Dictionary<ushort, Vector3>(count);
-        for (var i = 0; i < count; i++)
-        {
-            var key = r.ReadUInt16();
-            var uvCount = r.ReadUInt16();
-            var origin = r.ReadVector3();
-            r.Skip(12 + uvCount * 8); // normal and UVs: drawing only
-            vertices[key] = origin;
-        }
-        return vertices;
     }
 
     private static List<KeyValuePair<ushort, Polygon>> ReadPolygons(DatBinaryReader r, uint count, string what)

@@ -1,5 +1,4 @@
 using AcShadow.Fixtures.Bsp;
-
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
