@@ -78,8 +78,9 @@ public static class SceneCommand
         OutputFolder.Prepare(outDir);
 
         var subjects = new ChartSubjects(dat.Portal);
-        var distinct = scene.Objects.Select(o => (o.Kind, o.Id)).Distinct().Count();
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || distinct < 2, "objects compiled");
+        var placed = PlacedObject.Of(scene);
+        var distinct = placed.Select(p => (p.Object.Kind, p.Object.Id)).Distinct().Count();
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || distinct < 2, "objects and cells compiled");
         CompiledSceneReport report;
         try
         {
@@ -91,6 +92,8 @@ public static class SceneCommand
         }
         foreach (var (key, c) in report.Compiled)
             DiagnosticPrinter.Print(console.Error, JsonIds.Format(key.Id), c.Diagnostics);
+        foreach (var cell in report.Cells)
+            DiagnosticPrinter.Print(console.Error, JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
         OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
@@ -100,16 +103,16 @@ public static class SceneCommand
         var t = report.Totals;
         var w = console.Out;
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"scene {LandblockIds.Short(scene.LandBlockInfoId)} from {dat.Description}: {scene.Objects.Count} placed object(s), {distinct} distinct, mover radius {string.Join(", ", options.Chart.Radii.Select(r => r.ToString(CultureInfo.InvariantCulture) + " m"))}, tolerance {options.TolerancePercent} %"));
-        foreach (var group in scene.Objects.GroupBy(o => report.For(o)?.Model ?? "unresolved").OrderBy(g => g.Key, StringComparer.Ordinal))
+            $"scene {LandblockIds.Short(scene.LandBlockInfoId)} from {dat.Description}: {placed.Count} placed object(s), {distinct} distinct, {scene.Cells.Count} indoor cell(s) kept as retail, mover radius {string.Join(", ", options.Chart.Radii.Select(r => r.ToString(CultureInfo.InvariantCulture) + " m"))}, tolerance {options.TolerancePercent} %"));
+        foreach (var group in placed.Select(p => p.Object).GroupBy(o => report.For(o)?.Model ?? "unresolved").OrderBy(g => g.Key, StringComparer.Ordinal))
             w.WriteLine($"  {group.Key,-18} {group.Count(),4} object(s): {string.Join(' ', group.Select(o => JsonIds.Format(o.Id)).Distinct().Take(8))}{(group.Select(o => o.Id).Distinct().Count() > 8 ? " ..." : "")}");
-        var probes = report.Compiled.Values.SelectMany(c => c.Probes).ToArray();
+        var probes = report.Compiled.Values.SelectMany(c => c.Probes).Concat(report.Cells.SelectMany(c => c.Probes)).ToArray();
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  probes checked: {probes.Length} ({string.Join(", ", new[] { ProbeKind.Grid, ProbeKind.Doorway }.Concat(ProbeKinds.Stability).Select(k => $"{ChartProbes.Count(probes, k)} {ProbeKinds.Name(k)}"))})"));
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  whole scene over {t.Positions} mover positions: all-retail {t.Retail.MedianNs:0.0} ns, compiled {t.Compiled.MedianNs:0.0} ns per position (median); compiled agrees on {t.Agree} ({t.AgreementPercent:0.000}%), {t.FalsePass} false pass, {t.FalseBlock} false block"));
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  wrote {files.Count} file(s) ({bytes} bytes, {CompiledSceneWriter.BspGfxObjs(report).Count} BSP dump(s)) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
+            $"  wrote {files.Count} file(s) ({bytes} bytes, {CompiledSceneWriter.BspGfxObjs(report).Count} GfxObj and {report.Cells.Count(c => c.Bsp is not null)} cell BSP dump(s)) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
         return ExitCodes.Ok;
     }
 

@@ -35,6 +35,14 @@ public static class StabilityProbes
         return probes;
     }
 
+    /// <summary>The same probes for one tree posed in entity space (an indoor cell's structure in its cell's frame).</summary>
+    public static IReadOnlyList<Probe> Build(CompiledBsp bsp, PartPose pose, ChartOptions options)
+    {
+        var probes = new List<Probe>();
+        Add(probes, pose, bsp.Polygons, bsp.Nodes, options);
+        return probes;
+    }
+
     private static void Add(List<Probe> probes, PartPose pose, CompiledPolygon[] polygons, CompiledBspNode[] nodes, ChartOptions options)
     {
         var delta = options.StabilityOffset / pose.Scale;

@@ -7,12 +7,20 @@ using AcShadow.Fixtures.Json;
 namespace AcShadow.Fixtures.Scenes;
 
 /// <summary>One placed object of a compiled scene: what it is, the model chosen for it and how many shapes that model tests.</summary>
-public sealed record CompiledObject(int Index, uint Id, string Kind, string? Model, int Shapes, Vector3 LandblockPosition, Quaternion LandblockRotation);
+public sealed record CompiledObject(int Index, uint Id, string Kind, string? Model, int Shapes, Vector3 LandblockPosition, Quaternion LandblockRotation)
+{
+    /// <summary>The indoor cell the object stands in, when a cell placed it.</summary>
+    public uint? CellId { get; init; }
+}
+
+/// <summary>One indoor cell of a compiled scene: always its retail tree, in the cell's landblock-relative frame.</summary>
+public sealed record CompiledCell(uint CellId, string Model, Vector3 LandblockPosition, Quaternion LandblockRotation);
 
 /// <summary>
 /// compiled-scene.json (what <c>acshadow scene</c> writes) loaded: every object answered by the model the
 /// compiler chose for it — spheres, cylinders, part boxes, part convex hulls, or the part's retail BSP
-/// read from the dump beside it — with the same float operations the tool checked them with.
+/// read from the dump beside it — and every indoor cell by its retail tree (cells/0x%08X.bsp.json, asked
+/// as <see cref="CellOverlapQuery"/> asks it), with the same float operations the tool checked them with.
 /// <see cref="Query"/> takes landblock-relative centres.
 /// </summary>
 public sealed class CompiledScene
@@ -21,19 +29,24 @@ public sealed class CompiledScene
     public IReadOnlyList<float> MoverRadii { get; }
     public double TolerancePercent { get; }
     public IReadOnlyList<CompiledObject> Objects { get; }
+    public IReadOnlyList<CompiledCell> Cells { get; }
     public SceneQuery Query { get; }
 
-    private CompiledScene(uint landblockId, IReadOnlyList<float> moverRadii, double tolerance, IReadOnlyList<CompiledObject> objects, SceneQuery query)
+    private CompiledScene(uint landblockId, IReadOnlyList<float> moverRadii, double tolerance, IReadOnlyList<CompiledObject> objects, IReadOnlyList<CompiledCell> cells, SceneQuery query)
     {
         LandblockId = landblockId;
         MoverRadii = moverRadii;
         TolerancePercent = tolerance;
         Objects = objects;
+        Cells = cells;
         Query = query;
     }
 
-    /// <summary>Does a sphere at this landblock-relative centre touch anything of the scene?</summary>
+    /// <summary>Does a sphere at this landblock-relative centre touch anything of the scene, object or cell?</summary>
     public bool Overlaps(Vector3 landblockCenter, float radius) => Query.Overlaps(landblockCenter, radius);
+
+    /// <summary>The cells whose walls, floors or ceilings a sphere at this landblock-relative centre touches.</summary>
+    public IEnumerable<uint> TouchingCells(Vector3 landblockCenter, float radius) => Query.TouchingCells(landblockCenter, radius);
 
     /// <summary>Loads <c>compiled-scene.json</c> from a folder <c>acshadow scene --out</c> wrote, with the BSP dumps it names.</summary>
     public static CompiledScene Load(string folder)
@@ -73,15 +86,38 @@ public sealed class CompiledScene
             var shapes = BspFileReader.Arr(o, "shapes").Select(s => Shape(s, trees, bspFile)).ToArray();
             var id = JsonIds.TryParse(BspFileReader.Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
             var index = BspFileReader.Int(o, "index");
-            objects.Add(new CompiledObject(index, id, BspFileReader.Str(o, "kind"), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation));
+            var cellId = o.TryGetProperty("cellId", out var c) && c.ValueKind == JsonValueKind.String
+                ? JsonIds.TryParse(c.GetString()!, out var parsedCell) ? parsedCell : throw new FormatException("cellId is not a hex id")
+                : (uint?)null;
+            objects.Add(new CompiledObject(index, id, BspFileReader.Str(o, "kind"), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
             var bound = BspFileReader.Prop(o, "bound");
             if (shapes.Length == 0 || bound.ValueKind == JsonValueKind.Null) continue;
             queries.Add(new PlacedQuery(index, id, position, rotation, new AnyOverlap(shapes),
                 BspFileReader.Vec(BspFileReader.Prop(bound, "center")), BspFileReader.Float(bound, "radius")));
         }
+        var cells = new List<CompiledCell>();
+        var cellQueries = new List<SceneCell>();
+        foreach (var e in root.TryGetProperty("cells", out _) ? BspFileReader.Arr(root, "cells") : [])
+        {
+            var cellId = JsonIds.TryParse(BspFileReader.Str(e, "cellId"), out var parsed) ? parsed : throw new FormatException("cellId is not a hex id");
+            var frame = BspFileReader.Prop(e, "landblockFrame");
+            var position = BspFileReader.Vec(BspFileReader.Prop(frame, "origin"));
+            var rotation = BspFileReader.Quat(BspFileReader.Prop(frame, "orientation"));
+            var file = BspFileReader.Prop(e, "file");
+            if (file.ValueKind == JsonValueKind.Null) continue;
+            cells.Add(new CompiledCell(cellId, BspFileReader.Str(e, "model"), position, rotation));
+            try
+            {
+                cellQueries.Add(new SceneCell(cellId, new CellOverlapQuery(bspFile(file.GetString()!), position, rotation)));
+            }
+            catch (ArgumentException ex)
+            {
+                throw new FormatException($"cell {JsonIds.Format(cellId)}: {ex.Message}", ex);
+            }
+        }
         var landblock = JsonIds.TryParse(BspFileReader.Str(root, "landblockId"), out var lb) ? lb : throw new FormatException("landblockId is not a hex id");
         var radii = BspFileReader.Arr(root, "moverRadii").Select(BspFileReader.Number).ToArray();
-        return new CompiledScene(landblock, radii, BspFileReader.Prop(root, "tolerancePercent").GetDouble(), objects, new SceneQuery(queries));
+        return new CompiledScene(landblock, radii, BspFileReader.Prop(root, "tolerancePercent").GetDouble(), objects, cells, new SceneQuery(queries, cellQueries));
     }
 
     private static ISphereOverlap Shape(JsonElement s, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)

@@ -9,7 +9,8 @@ namespace AcShadow.Core.Scenes.Compile;
 
 /// <summary>
 /// Every file `acshadow scene` writes, in a fixed order: compiled-scene.json, the BSP dumps of the
-/// GfxObjs objects still modelled by retail need (and no others), scene-chart.csv, scene-chart.svg.
+/// GfxObjs objects still modelled by retail need (and no others), each indoor cell's PhysicsBSP dump
+/// (cells/0x%08X.bsp.json, in the cell's frame), scene-chart.csv, scene-chart.svg.
 /// </summary>
 public static class CompiledSceneFiles
 {
@@ -18,6 +19,8 @@ public static class CompiledSceneFiles
         var files = new List<ChartFile> { new(CompiledSceneFormat.Path, CompiledSceneWriter.Write(report)) };
         foreach (var id in CompiledSceneWriter.BspGfxObjs(report))
             if (dumps(id) is { } dump) files.Add(new ChartFile(BspFileFormat.PathFor(id), BspFileWriter.Write(dump)));
+        foreach (var cell in report.Cells)
+            if (cell.Bsp is not null) files.Add(new ChartFile(CompiledSceneWriter.CellBspPath(cell.Cell.Id), BspFileWriter.Write(cell.Physics!)));
         files.Add(new ChartFile(CompiledSceneFormat.ChartCsvPath, new UTF8Encoding(false).GetBytes(SceneChartCsv.Write(report))));
         files.Add(new ChartFile(CompiledSceneFormat.ChartSvgPath, new UTF8Encoding(false).GetBytes(SceneChartSvg.Write(report))));
         return files;

@@ -21,9 +21,9 @@ public static class CompiledSceneWriter
         var coordinates = scene.Coordinates;
         var objects = new JsonArr();
         var byModel = new SortedDictionary<string, int>(StringComparer.Ordinal);
-        foreach (var placed in scene.Objects)
+        foreach (var placed in report.Placed)
         {
-            var c = report.For(placed);
+            var c = report.For(placed.Object);
             if (c?.Model is { } model) byModel[model] = byModel.GetValueOrDefault(model) + 1;
             objects.Add(ObjectJson(placed, scene, c));
         }
@@ -42,7 +42,8 @@ public static class CompiledSceneWriter
                 .Add("probeRadius", options.Chart.ProbeRadius)
                 .Add("stabilityOffset", options.Chart.StabilityOffset))
             .Add("summary", new JsonObj()
-                .Add("objects", scene.Objects.Count)
+                .Add("objects", report.Placed.Count)
+                .Add("cells", report.Cells.Count)
                 .Add("models", Counts(byModel))
                 .Add("bspGfxObjs", BspGfxObjs(report).Count)
                 .Add("positions", totals.Positions)
@@ -52,13 +53,14 @@ public static class CompiledSceneWriter
             .Add("timing", new JsonObj()
                 .Add("retailMedianNsPerPosition", JsonNum.Of(totals.Retail.MedianNs))
                 .Add("compiledMedianNsPerPosition", JsonNum.Of(totals.Compiled.MedianNs)))
-            .Add("objects", objects);
+            .Add("objects", objects)
+            .Add("cells", JsonArr.Of(report.Cells, c => CellJson(c, scene)));
         return CanonicalJsonWriter.WriteUtf8(json);
     }
 
     /// <summary>The GfxObjs whose BSP dump a reader needs: the BSP parts of objects still modelled by retail.</summary>
     public static IReadOnlyList<uint> BspGfxObjs(CompiledSceneReport report) =>
-        report.Scene.Objects.Select(report.For).OfType<ObjectCompilation>()
+        report.Placed.Select(p => report.For(p.Object)).OfType<ObjectCompilation>()
             .Where(c => c.Chosen is not null)
             .SelectMany(c => c.Chosen!.Shapes.Where(s => s.Bsp is not null).Select(s => s.Bsp!.GfxObjId))
             .Distinct().Order().ToArray();
@@ -70,13 +72,40 @@ public static class CompiledSceneWriter
         return o;
     }
 
-    private static JsonObj ObjectJson(SceneObject placed, LandblockScene scene, ObjectCompilation? c)
+    /// <summary>The dump of a cell's PhysicsBSP beside compiled-scene.json (its id is the cell's).</summary>
+    public static string CellBspPath(uint cellId) => $"cells/0x{cellId:X8}.bsp.json";
+
+    private static JsonObj CellJson(CellCompilation c, LandblockScene scene)
     {
+        var frame = c.Cell.Position;
+        var (wx, wy, wz) = WorldFrame.Origin(scene.Coordinates, frame);
+        var probes = new JsonObj();
+        foreach (var kind in new[] { ProbeKind.Grid }.Concat(ProbeKinds.Stability))
+            probes.Add(kind == ProbeKind.SplittingPlane ? "splittingPlane" : ProbeKinds.Name(kind), ChartProbes.Count(c.Probes, kind));
+        probes.Add("total", c.Probes.Length);
+        return new JsonObj()
+            .Add("cellId", JsonIds.Format(c.Cell.Id))
+            .Add("environmentId", JsonIds.Format(c.Cell.EnvironmentFileId))
+            .Add("cellStructure", c.Cell.CellStructure)
+            .Add("landblockFrame", new JsonObj().Add("origin", frame.Origin).Add("orientation", JsonShapes.Quaternion(frame.Orientation)))
+            .Add("worldFrame", new JsonObj().Add("origin", new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)))
+                .Add("orientation", JsonShapes.Quaternion(frame.Orientation)))
+            .Add("model", c.Bsp is null ? null : CellCompilation.Model)
+            .Add("file", c.Bsp is null ? null : CellBspPath(c.Cell.Id))
+            .Add("polygons", c.Bsp?.Polygons.Length ?? 0)
+            .Add("probes", probes)
+            .Add("diagnostics", JsonArr.Of(c.Diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
+    }
+
+    private static JsonObj ObjectJson(PlacedObject p, LandblockScene scene, ObjectCompilation? c)
+    {
+        var placed = p.Object;
         var (wx, wy, wz) = WorldFrame.Origin(scene.Coordinates, placed.Frame);
         var json = new JsonObj()
             .Add("index", placed.Index)
             .Add("placedBy", SceneFileFormat.PlacedByName(placed.PlacedBy))
             .Add("placedIndex", placed.PlacedIndex)
+            .Add("cellId", p.CellId is { } cell ? JsonIds.Format(cell) : null)
             .Add("id", JsonIds.Format(placed.Id))
             .Add("kind", SceneFileFormat.KindName(placed.Kind))
             .Add("landblockFrame", new JsonObj().Add("origin", placed.Frame.Origin).Add("orientation", JsonShapes.Quaternion(placed.Frame.Orientation)))

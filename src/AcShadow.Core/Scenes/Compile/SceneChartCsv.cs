@@ -8,7 +8,8 @@ namespace AcShadow.Core.Scenes.Compile;
 /// <summary>
 /// scene-chart.csv: first the landblock as a whole, once with every object as retail and once compiled
 /// (positions asked, agreement with all-retail, median time per mover position), then one row per placed
-/// object (its chosen model, its probes and disagreements, time per query of the chosen model and of retail).
+/// object (its chosen model, its probes and disagreements, time per query of the chosen model and of retail),
+/// then one per indoor cell (always retail: its probes are where the scene was checked around it).
 /// </summary>
 public static class SceneChartCsv
 {
@@ -21,7 +22,7 @@ public static class SceneChartCsv
         var csv = new StringBuilder(Header).Append('\n');
         Row(csv, "landblock", "", "", "all-retail", t.RetailShapes, t.Positions, t.Positions, 100, 0, 0, t.Retail.MedianNs, t.Retail.P10Ns, t.Retail.P90Ns, t.Retail.MedianNs);
         Row(csv, "landblock", "", "", "compiled", t.CompiledShapes, t.Positions, t.Agree, t.AgreementPercent, t.FalsePass, t.FalseBlock, t.Compiled.MedianNs, t.Compiled.P10Ns, t.Compiled.P90Ns, t.Retail.MedianNs);
-        foreach (var placed in report.Scene.Objects)
+        foreach (var placed in report.Placed.Select(p => p.Object))
         {
             var c = report.For(placed);
             var probes = c?.Probes.Length ?? 0;
@@ -30,6 +31,9 @@ public static class SceneChartCsv
                 probes == 0 ? 100 : 100.0 * agree / probes, c?.FalsePass ?? 0, c?.FalseBlock ?? 0,
                 c?.ChosenTiming.MedianNs ?? double.NaN, c?.ChosenTiming.P10Ns ?? double.NaN, c?.ChosenTiming.P90Ns ?? double.NaN, c?.RetailTiming.MedianNs ?? double.NaN);
         }
+        foreach (var cell in report.Cells)
+            Row(csv, "cell", "", JsonIds.Format(cell.Cell.Id), cell.Bsp is null ? "unresolved" : CellCompilation.Model, cell.Bsp is null ? 0 : 1,
+                cell.Probes.Length, cell.Probes.Length, 100, 0, 0, double.NaN, double.NaN, double.NaN, double.NaN);
         return csv.ToString();
     }
 

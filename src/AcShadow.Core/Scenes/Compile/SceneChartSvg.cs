@@ -18,11 +18,11 @@ public static class SceneChartSvg
     public static string Write(CompiledSceneReport report)
     {
         var t = report.Totals;
-        var objects = report.Scene.Objects;
-        var height = 250 + objects.Count * Row + 60;
+        var objects = report.Placed.Select(p => p.Object).ToArray();
+        var height = 250 + (objects.Length + report.Cells.Count) * Row + 60;
         var svg = new SvgDocument(Width, height);
         svg.Text(20, 30, $"Landblock {JsonIds.Format(report.Scene.LandBlockInfoId)}: every object as retail against the compiled scene", 18, "start", "bold");
-        svg.Text(20, 52, $"{I(objects.Count)} placed object(s); {I(t.Positions)} mover positions (every object's probes, in the landblock); mover radius {string.Join(", ", report.Options.Chart.Radii.Select(r => F(r, 2) + " m"))}; tolerance {F(report.Options.TolerancePercent, 2)} % false blocks, no false pass", 12.5);
+        svg.Text(20, 52, $"{I(objects.Length)} placed object(s), {I(report.Cells.Count)} indoor cell(s) (retail in both); {I(t.Positions)} mover positions (every object's and cell's probes, in the landblock); mover radius {string.Join(", ", report.Options.Chart.Radii.Select(r => F(r, 2) + " m"))}; tolerance {F(report.Options.TolerancePercent, 2)} % false blocks, no false pass", 12.5);
 
         var top = Math.Max(Max(t.Retail.P90Ns), Max(t.Compiled.P90Ns));
         double X(double ns, double scale) => Left + (double.IsFinite(ns) ? Math.Clamp(ns / scale, 0, 1) : 0) * BarWidth;
@@ -36,7 +36,7 @@ public static class SceneChartSvg
 
         svg.Text(20, 226, "Per object: chosen model, time per query (coloured) against retail (grey), disagreements over its probes", 14, "start", "bold");
         var perObject = objects.Select(report.For).Where(c => c is not null).SelectMany(c => new[] { c!.ChosenTiming.P90Ns, c.RetailTiming.P90Ns }).Where(double.IsFinite).DefaultIfEmpty(1).Max();
-        for (var k = 0; k < objects.Count; k++)
+        for (var k = 0; k < objects.Length; k++)
         {
             var placed = objects[k];
             var c = report.For(placed);
@@ -46,6 +46,14 @@ public static class SceneChartSvg
             svg.Rect(Left, y + 2, X(c.RetailTiming.MedianNs, perObject) - Left, 8, ChartPalette.AgreeBlocked, title: $"retail {Time(c.RetailTiming.MedianNs)}");
             svg.Rect(Left, y + 11, X(c.ChosenTiming.MedianNs, perObject) - Left, 8, ModelColour(c.Model), title: $"{c.Model} {Time(c.ChosenTiming.MedianNs)}");
             svg.Text(Left + BarWidth + 10, y + 12, $"{Time(c.ChosenTiming.MedianNs)} vs {Time(c.RetailTiming.MedianNs)}; {I(c.Probes.Length)} probes, {I(c.FalsePass)} false pass, {I(c.FalseBlock)} false block", 10.5);
+        }
+        for (var k = 0; k < report.Cells.Count; k++)
+        {
+            var cell = report.Cells[k];
+            var y = 250 + (objects.Length + k) * Row;
+            svg.Text(20, y + 12, $"cell {JsonIds.Format(cell.Cell.Id)} → {(cell.Bsp is null ? "unresolved" : CellCompilation.Model)}", 12, "start", "normal", ModelColour(cell.Bsp is null ? null : CellCompilation.Model));
+            if (cell.Bsp is not null)
+                svg.Text(Left, y + 12, $"kept as retail: a room a mover stands inside, which every cheaper (solid) model would fill; {I(cell.Bsp.Polygons.Length)} polygons, {I(cell.Probes.Length)} probes", 10.5);
         }
         svg.Text(20, height - 20, "Times are measurements: they vary with machine, load and build. Disagreements do not.", 11);
         return svg.Render();

@@ -3,6 +3,7 @@ using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
@@ -24,15 +25,48 @@ public static class SceneCompiler
     public static CompiledSceneReport Compile(LandblockScene scene, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer, Action<int, int>? progress = null)
     {
         if (options.Problem() is { } problem) throw new ArgumentException(problem, nameof(options));
-        var distinct = scene.Objects.Select(o => (o.Kind, o.Id)).Distinct().ToArray();
+        var placed = PlacedObject.Of(scene);
+        var distinct = placed.Select(p => (p.Object.Kind, p.Object.Id)).Distinct().ToArray();
+        var total = distinct.Length + scene.Cells.Count;
         var compiled = new Dictionary<(SceneObjectKind, uint), ObjectCompilation>();
         foreach (var key in distinct)
         {
             compiled[key] = CompileOne(key.Kind, key.Id, subjects, options, timer);
-            progress?.Invoke(compiled.Count, distinct.Length);
+            progress?.Invoke(compiled.Count, total);
         }
-        var totals = Totals(scene, compiled, options, timer);
-        return new CompiledSceneReport(options, scene, compiled, totals);
+        var structures = new CellStructures(subjects.Dat);
+        var cells = new List<CellCompilation>(scene.Cells.Count);
+        foreach (var cell in scene.Cells)
+        {
+            cells.Add(CompileCell(cell, structures, options.Chart));
+            progress?.Invoke(compiled.Count + cells.Count, total);
+        }
+        var totals = Totals(placed, compiled, cells, options, timer);
+        return new CompiledSceneReport(options, scene, placed, compiled, cells, totals);
+    }
+
+    /// <summary>
+    /// One indoor cell: its structure's PhysicsBSP in the cell's frame, kept as retail
+    /// (<see cref="CellCompilation"/> says why), with the grid and stability probes the scene is checked at.
+    /// </summary>
+    public static CellCompilation CompileCell(EnvCell cell, CellStructures structures, ChartOptions chart)
+    {
+        var frame = new PartPose(cell.Position.Origin, Normalised(cell.Position.Orientation), 1f);
+        var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
+        if (geometry is null)
+            return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
+        var physics = geometry.Physics with { GfxObjId = cell.Id };
+        var diagnostics = physics.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToList();
+        if (!(float.IsFinite(cell.Position.Origin.X) && float.IsFinite(cell.Position.Origin.Y) && float.IsFinite(cell.Position.Origin.Z)) || !float.IsFinite(cell.Position.Orientation.Length()) || cell.Position.Orientation.Length() < 1e-6f)
+        {
+            diagnostics.Add(new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
+            return new CellCompilation(cell, physics, null, frame, [], Bounds.Empty, diagnostics);
+        }
+        var bsp = CompiledBsp.Compile(physics);
+        var bounds = bsp.Polygons.SelectMany(p => p.Vertices).Aggregate(Bounds.Empty, (b, v) => b.Include(v));
+        Probe[] probes = bsp.Polygons.Length == 0 ? []
+            : [.. ProbeGrid.Build(bounds, chart).Probes, .. StabilityProbes.Build(bsp, new PartPose(Vector3.Zero, Quaternion.Identity, 1f), chart)];
+        return new CellCompilation(cell, physics, bsp, frame, probes, bounds, diagnostics);
     }
 
     public static ObjectCompilation CompileOne(SceneObjectKind kind, uint id, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer)
@@ -98,18 +132,21 @@ public static class SceneCompiler
     private static ObjectCompilation Unresolved(SceneObjectKind kind, uint id, string? model, IReadOnlyList<Diagnostic> diagnostics) =>
         new(id, kind, model, null, null, [], [], [], [], TimingStats.Of([]), TimingStats.Of([]), Bounds.Empty, diagnostics);
 
-    /// <summary>The scene asked as a whole at every placed object's probes, all-retail against compiled.</summary>
-    private static SceneTotals Totals(LandblockScene scene, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled, SceneCompileOptions options, IQueryTimer timer)
+    /// <summary>The scene asked as a whole at every placed object's and every cell's probes, all-retail against compiled.</summary>
+    private static SceneTotals Totals(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
+        IReadOnlyList<CellCompilation> cells, SceneCompileOptions options, IQueryTimer timer)
     {
-        var retail = Query(scene, compiled, c => c.Retail);
-        var chosen = Query(scene, compiled, c => c.Chosen);
+        var retail = Query(placed, compiled, cells, c => c.Retail);
+        var chosen = Query(placed, compiled, cells, c => c.Chosen);
         var positions = new List<Probe>();
-        foreach (var placed in scene.Objects)
+        foreach (var p in placed)
         {
-            if (compiled.GetValueOrDefault((placed.Kind, placed.Id)) is not { } c) continue;
-            var frame = new PartPose(placed.Frame.Origin, Normalised(placed.Frame.Orientation), 1f);
-            foreach (var p in c.Probes) positions.Add(p with { Center = frame.ToEntity(p.Center) });
+            if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;
+            var frame = new PartPose(p.Object.Frame.Origin, Normalised(p.Object.Frame.Orientation), 1f);
+            foreach (var probe in c.Probes) positions.Add(probe with { Center = frame.ToEntity(probe.Center) });
         }
+        foreach (var cell in cells)
+            foreach (var probe in cell.Probes) positions.Add(probe with { Center = cell.Frame.ToEntity(probe.Center) });
         int agree = 0, falsePass = 0, falseBlock = 0;
         foreach (var p in positions)
         {
@@ -121,23 +158,35 @@ public static class SceneCompiler
         }
         var retailTiming = timer.Measure("scene: every object retail", new PreparedModel(retail, [], []), positions, options.Chart);
         var compiledTiming = timer.Measure("scene: compiled", new PreparedModel(chosen, [], []), positions, options.Chart);
-        int Shapes(Func<ObjectCompilation, PreparedModel?> pick) =>
-            scene.Objects.Sum(o => compiled.GetValueOrDefault((o.Kind, o.Id)) is { } c && pick(c) is { } m ? m.Shapes.Count : 0);
+        var cellShapes = cells.Count(c => c.Bsp is not null);
+        int Shapes(Func<ObjectCompilation, PreparedModel?> pick) => cellShapes +
+            placed.Sum(p => compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is { } c && pick(c) is { } m ? m.Shapes.Count : 0);
         return new SceneTotals(positions.Count, agree, falsePass, falseBlock, retailTiming, compiledTiming, Shapes(c => c.Retail), Shapes(c => c.Chosen));
     }
 
-    /// <summary>Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/> gives.</summary>
-    public static SceneQuery Query(LandblockScene scene, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled, Func<ObjectCompilation, PreparedModel?> pick)
+    /// <summary>
+    /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
+    /// gives, and every cell by its retail tree (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
+    /// </summary>
+    public static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
     {
         var objects = new List<PlacedQuery>();
-        foreach (var placed in scene.Objects)
+        foreach (var p in placed)
         {
-            if (compiled.GetValueOrDefault((placed.Kind, placed.Id)) is not { } c || pick(c) is not { } model || c.Bounds.IsEmpty) continue;
+            var o = p.Object;
+            if (compiled.GetValueOrDefault((o.Kind, o.Id)) is not { } c || pick(c) is not { } model || c.Bounds.IsEmpty) continue;
             var (center, radius) = Bound(c.Bounds);
-            objects.Add(new PlacedQuery(placed.Index, placed.Id, placed.Frame.Origin, placed.Frame.Orientation, model.Query, center, radius));
+            objects.Add(new PlacedQuery(o.Index, o.Id, o.Frame.Origin, o.Frame.Orientation, model.Query, center, radius));
         }
-        return new SceneQuery(objects);
+        var cellQueries = cells.Where(c => c.Bsp is not null)
+            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Origin, c.Cell.Position.Orientation))).ToArray();
+        return new SceneQuery(objects, cellQueries);
     }
+
+    /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
+    public static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
+        Query(report.Placed, report.Compiled, report.Cells, pick);
 
     /// <summary>The sphere around an entity-space box, padded so rounding never lets it reject a touching sphere.</summary>
     public static (Vector3 Center, float Radius) Bound(Bounds b)
