@@ -9,9 +9,9 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.View;
-using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;
 
