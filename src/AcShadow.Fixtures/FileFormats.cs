@@ -16,6 +16,7 @@ public static class FileFormats
     public const string Index = "acshadow.index/1";
     public const string Scene = "acshadow.scene/1";
     public const string Audit = "acshadow.audit/1";
+    public const string CompiledScene = "acshadow.compiled-scene/1";
     public const string Cell = "acshadow.cell/1";
     public const string Doctor = "acshadow.doctor/1";
 
@@ -36,6 +37,8 @@ public static class FileFormats
             "one GfxObj's physics polygons, planes and PhysicsBSP tree"),
         new("scene", Scene, "scene.json", "urn:acshadow:schema:acshadow.scene-1",
             "a landblock's placed objects and buildings with world frames"),
+        new("compiled-scene", CompiledScene, "compiled-scene.json", "urn:acshadow:schema:acshadow.compiled-scene-1",
+            "a landblock compiled by `acshadow scene`: each object's cheapest exact model, its shapes and the evidence"),
         new("cell", Cell, "cells/0x%08X.cell.json", "urn:acshadow:schema:acshadow.cell-1",
             "one indoor cell (EnvCell): its frames, physics polygons with planes, PhysicsBSP, portals and the objects inside"),
         new("index", Index, "index.json", "urn:acshadow:schema:acshadow.index-1",

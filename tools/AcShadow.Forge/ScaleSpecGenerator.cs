@@ -26,6 +26,9 @@ public static class ScaleSpecGenerator
     public const int MaxGfxObjs = 400000;
     public const int MaxParts = 30;
     public const int MinPhysicsPolygons = 4, MaxPhysicsPolygons = 2000;
+
+    /// <summary>Objects the first landblock (0x0000FFFE) places: a busy landblock, for benchmarking scene compiles.</summary>
+    public const int BusyLandblockObjects = 60;
     private const int JambVariants = 16;
 
     /// <summary>The GfxObj count <see cref="Generate"/> uses when none is given: the default dat's ratio.</summary>
@@ -215,14 +218,15 @@ public static class ScaleSpecGenerator
             });
         }
 
-        // Landblocks: one per 200 Setups, each placing doors, statics, bare GfxObjs and buildings.
+        // Landblocks: one per 200 Setups, each placing doors, statics, bare GfxObjs and buildings; the first 60 objects.
         var landblocks = new List<LandblockSpec>();
         var placeable = setupSpecs.Select(s => s.Id!).ToArray();
         var bareModels = barePhysics.Count > 0 ? barePhysics : physicsPool.Select(p => p.Id).ToList();
         for (var l = 0; l < Math.Max(1, setups / 200); l++)
         {
             var id = (uint)(((l % 254) << 24) | ((l / 254) << 16) | 0xFFFE);
-            var objects = Enumerable.Range(0, random.Next(10, 31)).Select(_ =>
+            // The first landblock is a busy one (60 placed objects, as a town's), so a scene compile is measured at scale.
+            var objects = Enumerable.Range(0, l == 0 ? BusyLandblockObjects : random.Next(10, 31)).Select(_ =>
             {
                 var model = random.Next(5) == 0 ? Hex(bareModels[random.Next(bareModels.Count)]) : placeable[random.Next(placeable.Length)];
                 return new StabSpec { Id = model, Origin = [Range(random, 0, 192), Range(random, 0, 192), Range(random, 0, 40)], Orientation = SampleSpecAuthor.Z(random.Next(360)) };

@@ -46,6 +46,11 @@ public static class CommandExamples
             "acshadow chart --setup 0x020019FF --out chart-door",
             "acshadow chart --doors --out chart-doors --probe-radius 0.5 --spacing 0.25",
         ],
+        ["scene"] =
+        [
+            "acshadow scene --landblock 0xA9B4 --out compiled-a9b4",
+            "acshadow scene --landblock 0xA9B4 --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out compiled --mover-radius 0.48 --mover-radius 1.2 --tolerance 0.5",
+        ],
         ["view"] =
         [
             "acshadow view --setup 0x020019FF --out v",

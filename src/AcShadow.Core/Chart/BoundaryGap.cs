@@ -7,7 +7,7 @@ namespace AcShadow.Core.Chart;
 
 /// <summary>
 /// How far a probe's surface is from a model's geometry: the distance from the probe centre to the nearest
-/// surface of any of the shapes (BSP polygons, cylinder or sphere surfaces), minus the probe radius.
+/// surface of any of the shapes (BSP polygons, faces of fitted solids, cylinder or sphere surfaces), minus the probe radius.
 /// Negative: the probe reaches that far past the surface. +∞: the model has no shapes. A disagreement near
 /// zero on either model's geometry is marginal; a large one is a wrong shape.
 /// </summary>
@@ -22,6 +22,13 @@ public static class BoundaryGap
 
     private static float Distance(PreparedShape shape, Vector3 point)
     {
+        if (shape.Polytope is { } solid)
+        {
+            var (inPart, _) = shape.Pose.ToLocal(point, 0f);
+            var nearest = float.PositiveInfinity;
+            foreach (var face in solid.Faces) nearest = MathF.Min(nearest, SurfaceDistance.ToPolygon(face, inPart));
+            return nearest * shape.Pose.Scale;
+        }
         var s = shape.Shape;
         switch (s.CollisionType)
         {

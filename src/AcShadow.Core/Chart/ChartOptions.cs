@@ -33,7 +33,7 @@ public sealed record ChartOptions
     /// <summary>Grid probes at most; a larger grid is coarsened (spacing doubled until it fits) and says so.</summary>
     public int MaxGridProbes { get; init; } = 250_000;
 
-    /// <summary>Disagreements listed per model and object, nearest the boundary first.</summary>
+    /// <summary>False passes and, separately, false blocks listed per model and object, nearest the boundary first.</summary>
     public int FailuresPerModel { get; init; } = 10;
 
     /// <summary>Probes in the timed sample (evenly strided over all probes).</summary>
@@ -45,6 +45,15 @@ public sealed record ChartOptions
     /// <summary>Timed passes; the median, p10 and p90 are over these.</summary>
     public int TimingBatches { get; init; } = 31;
 
+    /// <summary>Further mover radii the stability probes are placed for, besides <see cref="ProbeRadius"/> (metres).</summary>
+    public IReadOnlyList<float> MoverRadii { get; init; } = [];
+
+    /// <summary>How far short of and past each boundary a stability probe sits (metres): half of retail's ε.</summary>
+    public float StabilityOffset { get; init; } = 1e-4f;
+
+    /// <summary>Every mover radius probed: <see cref="ProbeRadius"/> first, then <see cref="MoverRadii"/> not already listed.</summary>
+    public IReadOnlyList<float> Radii => [.. new[] { ProbeRadius }.Concat(MoverRadii).Distinct()];
+
     public float EffectiveMargin => Margin ?? ProbeRadius + Spacing;
     public float EffectiveWalkHeight => WalkHeight ?? ProbeRadius;
 
@@ -55,6 +64,9 @@ public sealed record ChartOptions
         if (!float.IsFinite(Spacing) || Spacing < 0.01f) return $"spacing must be at least 0.01 m, not {F(Spacing)}";
         if (Margin is { } m && (!float.IsFinite(m) || m < 0f)) return $"margin must be zero or more metres, not {F(m)}";
         if (WalkHeight is { } w && !float.IsFinite(w)) return $"walking height must be a number of metres, not {F(w)}";
+        foreach (var r in MoverRadii)
+            if (!(float.IsFinite(r) && r > 0f)) return $"mover radius must be a positive number of metres, not {F(r)}";
+        if (!float.IsFinite(StabilityOffset) || StabilityOffset <= 0f) return $"stability offset must be a positive number of metres, not {F(StabilityOffset)}";
         if (!float.IsFinite(DoorwayStep) || DoorwayStep < 0.005f) return $"doorway step must be at least 0.005 m, not {F(DoorwayStep)}";
         if (DoorwayOffsets.Any(o => !float.IsFinite(o))) return "doorway offsets must be numbers";
         if (MaxGridProbes < 1 || TimingProbes < 1 || TimingBatches < 1 || WarmupPasses < 0 || FailuresPerModel < 0) return "probe, timing and failure counts must be positive";

@@ -7,7 +7,7 @@ namespace AcShadow.Core.Chart;
 
 /// <summary>
 /// Runs the chart: for each object, prepare every model, lay the probes (grid around everything any model
-/// sees, doorway lines across the reference's footprint), ask every model about every probe, compare with
+/// sees, doorway lines across the reference's footprint, stability probes on its boundary: <see cref="ChartProbes"/>), ask every model about every probe, compare with
 /// the first model (the reference), rank the disagreements by nearness to the boundary, and time each
 /// model. Objects and models run one after another, so answers are the same on any machine and timings are
 /// not disturbed by each other.
@@ -37,14 +37,8 @@ public static class ChartRunner
     {
         var prepared = models.Select(m => Prepare(m, subject)).ToArray();
         var reference = prepared[0];
-        var everything = ShapeBounds.Of(prepared.SelectMany(p => p.Shapes));
-        var referenceBounds = ShapeBounds.Of(reference.Shapes);
-        var grid = ProbeGrid.Build(everything, options);
-        var opening = DoorwayProbes.Find(referenceBounds);
-        var probes = grid.Probes.Concat(DoorwayProbes.Build(opening, options)).ToArray();
-        var notes = new List<string>();
-        if (grid.Spacing != options.Spacing)
-            notes.Add(FormattableString.Invariant($"grid coarsened from {options.Spacing} m to {grid.Spacing} m to stay under {options.MaxGridProbes} probes"));
+        var laid = ChartProbes.Lay(reference, prepared, options);
+        var probes = laid.Probes;
 
         var referenceAnswers = Answers(reference, probes);
         var outcomes = new List<ModelOutcome>(models.Count);
@@ -54,7 +48,7 @@ public static class ChartRunner
             outcomes.Add(Compare(models[m].Name, prepared[m], reference, probes, referenceAnswers, answers, options, timer));
         }
         var cheapest = CheapestExact(outcomes);
-        return new ObjectChart(subject.Setup.Id, probes, grid.Spacing, everything, opening, referenceAnswers, outcomes, cheapest, notes);
+        return new ObjectChart(subject.Setup.Id, probes, laid.GridSpacing, laid.Bounds, laid.Doorway, referenceAnswers, outcomes, cheapest, laid.Notes);
     }
 
     /// <summary>Medians within this factor of the fastest exact model's count as the same cost (timing noise).</summary>
@@ -73,7 +67,7 @@ public static class ChartRunner
         return exact.First(o => o.Timing.MedianNs <= fastest * CostTieFactor).Model;
     }
 
-    private static PreparedModel Prepare(IShapeModel model, ChartSubject subject)
+    internal static PreparedModel Prepare(IShapeModel model, ChartSubject subject)
     {
         try
         {
@@ -86,7 +80,7 @@ public static class ChartRunner
         }
     }
 
-    private static bool[] Answers(PreparedModel model, Probe[] probes)
+    internal static bool[] Answers(PreparedModel model, Probe[] probes)
     {
         var answers = new bool[probes.Length];
         for (var i = 0; i < probes.Length; i++) answers[i] = model.Overlaps(probes[i].Center, probes[i].Radius);
@@ -109,7 +103,10 @@ public static class ChartRunner
             var p = probes[i];
             disagreements.Add(new Disagreement(i, p, pass, BoundaryGap.Of(reference.Shapes, p.Center, p.Radius), BoundaryGap.Of(model.Shapes, p.Center, p.Radius)));
         }
-        var nearest = disagreements.OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel).ToArray();
+        // The nearest of each kind, so false blocks hugging the boundary (stability probes) never crowd out a false pass.
+        var nearest = disagreements.Where(d => d.FalsePass).OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel)
+            .Concat(disagreements.Where(d => !d.FalsePass).OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel))
+            .OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).ToArray();
         var timing = timer.Measure(name, model, probes, options);
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
     }

@@ -14,6 +14,9 @@ public sealed class ChartSubjects
 
     public CompiledBspCache Bsps { get; }
 
+    /// <summary>The portal dat the subjects come from.</summary>
+    public IDatSource Dat => _dat;
+
     public ChartSubjects(IDatSource dat)
     {
         _dat = dat;

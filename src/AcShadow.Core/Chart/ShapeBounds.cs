@@ -5,12 +5,17 @@ using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart;
 
-/// <summary>Where a prepared shape is, as an entity-space box: BSP parts by their posed polygon vertices.</summary>
+/// <summary>Where a prepared shape is, as an entity-space box: BSP parts by their posed polygon vertices, fitted solids by theirs.</summary>
 public static class ShapeBounds
 {
     public static Bounds Of(PreparedShape shape)
     {
         var b = Bounds.Empty;
+        if (shape.Polytope is { } solid)
+        {
+            foreach (var v in solid.Vertices) b = b.Include(shape.Pose.ToEntity(v));
+            return b;
+        }
         var s = shape.Shape;
         switch (s.CollisionType)
         {

@@ -5,10 +5,15 @@ namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// A shape the object query tests: where it came from, a readable name ("part 0 (GfxObj 0x010044B5)",
-/// "CylSphere 1", "Sphere 0"), its pose in entity space and, for a BSP shape, its compiled tree.
+/// "CylSphere 1", "Sphere 0"), its pose in entity space and, for a BSP shape, its compiled tree. A part
+/// modelled by a fitted solid instead carries it, in part space: <see cref="Box"/> (its faces also in
+/// <see cref="Polytope"/>) or <see cref="Polytope"/> alone (a convex hull).
 /// </summary>
 public sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose, CompiledBsp? Bsp)
 {
+    public OrientedBox? Box { get; init; }
+    public ConvexPolytope? Polytope { get; init; }
+
     public static string NameOf(ShadowShape s) => s.Source switch
     {
         _ when s.SourceIndex < 0 => "Setup Radius x Height",

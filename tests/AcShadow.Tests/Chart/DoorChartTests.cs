@@ -37,7 +37,7 @@ public class DoorChartTests
         var centre = Enumerable.Range(0, Door.Probes.Count).Where(i => Door.Probes[i].Kind == ProbeKind.Doorway && Door.Probes[i].Offset == 0f)
             .OrderBy(i => MathF.Abs(Door.Probes[i].Center.Y)).First();
         Assert.True(Door.Reference[centre] && fallback.Answers[centre]);
-        Assert.Equal(0, fallback.FalseBlock);
+        Assert.Equal(0, fallback.DoorwayFalseBlock);
     }
 
     [Fact]
@@ -54,9 +54,15 @@ public class DoorChartTests
     }
 
     [Fact]
-    public void Union_agrees_with_retail_on_the_door_and_part_spheres_only_over_block()
+    public void Union_never_lets_a_mover_through_the_door_and_part_spheres_only_over_block()
     {
-        Assert.True(Model("union").Exact);
+        // Union is retail's BSPs plus the door's Sphere as a cylinder, inside the leaf; only that cylinder's
+        // square profile (CCylSphere tests a box in profile) blocks at a few stability probes beside the leaf's bottom edges.
+        var union = Model("union");
+        Assert.Equal(0, union.FalsePass);
+        Assert.Equal(0, union.DoorwayFalseBlock);
+        Assert.All(Enumerable.Range(0, Door.Probes.Count).Where(i => union.Answers[i] != Door.Reference[i]),
+            i => Assert.True(ProbeKinds.IsStability(Door.Probes[i].Kind) && Door.Probes[i].Center.Z < 0f, $"probe {i}: {Door.Probes[i]}"));
         Assert.Equal(0, Model("part-spheres").FalsePass);
         Assert.True(Model("part-spheres").FalseBlock > 0);
     }
@@ -65,21 +71,24 @@ public class DoorChartTests
     public void Failures_list_the_disagreements_nearest_the_boundary_first()
     {
         var fallback = Model("fallback-cylinder");
-        Assert.Equal(SampleChart.DoorOnly.Options.FailuresPerModel, fallback.Nearest.Count);
-        Assert.All(fallback.Nearest, d => Assert.True(d.FalsePass));
-        for (var k = 1; k < fallback.Nearest.Count; k++) Assert.True(fallback.Nearest[k - 1].Nearness <= fallback.Nearest[k].Nearness);
+        var k = SampleChart.DoorOnly.Options.FailuresPerModel;
+        Assert.Equal(Math.Min(k, fallback.FalsePass) + Math.Min(k, fallback.FalseBlock), fallback.Nearest.Count);
+        // Stability probes put many false blocks within 0.1 mm of the boundary; the false passes still show.
+        Assert.True(fallback.FalsePass > 0);
+        Assert.Equal(Math.Min(k, fallback.FalsePass), fallback.Nearest.Count(d => d.FalsePass));
+        for (var n = 1; n < fallback.Nearest.Count; n++) Assert.True(fallback.Nearest[n - 1].Nearness <= fallback.Nearest[n].Nearness);
         var csv = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "failures.csv").Content);
         Assert.StartsWith(FailuresCsv.Header + "\n", csv);
-        Assert.Contains("0x020019FF,fallback-cylinder,1,false_pass,", csv);
+        Assert.Contains("0x020019FF,fallback-cylinder,1,", csv);
     }
 
     [Fact]
     public void The_cheapest_exact_model_is_named()
     {
-        // With the fixed timer retail (400 ns) beats union (420 ns); both are exact on the door.
+        // Retail is the only exact model of the door: its jambs carry thresholds (no box, no hull) and union's cylinder is square in profile.
         Assert.Equal("retail", Door.CheapestExact);
         var chart = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "chart.csv").Content);
         Assert.Contains("0x020019FF,retail,3,", chart);
-        Assert.Equal(1 + 5, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
+        Assert.Equal(1 + AcShadow.Core.Chart.Models.ShapeModels.All.Count, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
     }
 }

@@ -61,6 +61,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             _ when name.EndsWith(".cell.json") => "cell",
             _ when Path.GetFileName(Path.GetDirectoryName(path)) == "cells" => "acdream-cell",
             "scene.json" => "scene",
+            "compiled-scene.json" => "compiled-scene",
             "index.json" => "index",
             "audit.json" => "audit",
             "doctor.json" => "doctor",

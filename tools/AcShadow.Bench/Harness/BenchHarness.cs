@@ -8,12 +8,15 @@ namespace AcShadow.Bench.Harness;
 /// One harness run: forge (or reuse) the scale dat and its quarter-size twin, then measure side by side,
 /// each warmed once and repeated: the floor, the naive exporter, `batch --all` at one job and at all
 /// cores, `--incremental` with nothing to do, `doctor`, `dump` against `--version`, the busiest landblock's scene with
-/// and without its indoor cells, and the collision reference
+/// and without its indoor cells, `scene` against `chart` on a landblock of 60 objects, and the collision reference
 /// against brute force; check the outputs are byte-identical; write bench.json and print the table.
 /// </summary>
 public static class BenchHarness
 {
     public const string DoorSetup = "0x020019FF";
+
+    /// <summary>The scale dat's busy landblock (<see cref="AcShadow.Forge.ScaleSpecGenerator.BusyLandblockObjects"/> objects).</summary>
+    public const string BusyLandblock = "0x0000";
 
     public static BenchReport Run(HarnessOptions options, TextWriter log)
     {
@@ -78,6 +81,14 @@ public static class BenchHarness
             timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
                 _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut]); }));
             Reset(dumpOut);
+
+            // The scale dat's first landblock places 60 objects: compiling it against charting it.
+            var landblockOut = Path.Combine(options.WorkDirectory, "landblock");
+            timings.Add(Measure(log, options, "chart --landblock", "full", 1, "disk", $"acshadow chart --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
+                _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["chart", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet"]); }));
+            timings.Add(Measure(log, options, "scene --landblock", "full", 1, "disk", $"acshadow scene --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
+                _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["scene", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet"]); }));
+            Reset(landblockOut);
 
             // A landblock's scene with and without its interiors: the landblock with the most cells.
             var landblock = BusiestLandblock(full.Directory);

@@ -59,6 +59,8 @@ public sealed record BenchReport(
             new($"peak full / quarter, batch {cores} jobs", batchN.PeakMedianMiB / Get("batch", "quarter", cores).PeakMedianMiB, "<=", 1.3, "how peak memory grows with the dat"),
             new($"doctor / batch, {cores} jobs", Get("doctor", "full", cores, "none").Median / batchN.Median, "<=", 2, "acshadow doctor over batch --all, both at all cores, batch writing to disk"),
             new($"peak full / quarter, doctor {cores} jobs", Get("doctor", "full", cores, "none").PeakMedianMiB / Get("doctor", "quarter", cores, "none").PeakMedianMiB, "<=", 1.3, "how the doctor's peak memory grows with the dat"),
+            new("scene / chart --landblock", Get("scene --landblock", "full", 1).Median / Get("chart --landblock", "full", 1).Median, "<=", 2,
+                $"compiling the scale dat's {AcShadow.Forge.ScaleSpecGenerator.BusyLandblockObjects}-object landblock over charting it, whole processes"),
             new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
                 $"per-query speed-up of the collision reference on GfxObjs of {CollisionComparison.MinPolygons}+ polygons"),
         ]);

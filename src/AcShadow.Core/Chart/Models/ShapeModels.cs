@@ -10,6 +10,8 @@ public static class ShapeModels
         new FallbackCylinderModel(),
         new SpheresModel(),
         new PartSpheresModel(),
+        new PartBoxesModel(),
+        new PartHullsModel(),
     ];
 
     public static IShapeModel? Find(string name) => All.FirstOrDefault(m => string.Equals(m.Name, name, StringComparison.OrdinalIgnoreCase));

@@ -17,7 +17,8 @@ public static class FailureMapSvg
     {
         var walk = report.Options.EffectiveWalkHeight;
         var slice = Enumerable.Range(0, chart.Probes.Count)
-            .Where(i => chart.Probes[i].Kind == ProbeKind.Doorway || MathF.Abs(chart.Probes[i].Center.Z - walk) < 1e-3f)
+            .Where(i => chart.Probes[i].Kind == ProbeKind.Doorway
+                || (chart.Probes[i].Kind == ProbeKind.Grid && MathF.Abs(chart.Probes[i].Center.Z - walk) < 1e-3f))
             .ToArray();
         var half = chart.GridSpacing / 2;
         double minX = double.MaxValue, maxX = double.MinValue, minY = double.MaxValue, maxY = double.MinValue;

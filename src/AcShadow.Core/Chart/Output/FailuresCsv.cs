@@ -22,7 +22,7 @@ public static class FailuresCsv
                     var p = d.Probe;
                     csv.Append(string.Join(',',
                         Id(o.SetupId), Csv(m.Model), I(rank + 1), d.FalsePass ? "false_pass" : "false_block",
-                        p.Kind == ProbeKind.Doorway ? "doorway" : "grid", p.Kind == ProbeKind.Doorway ? I(p.Line) : "",
+                        ProbeKinds.Name(p.Kind), p.Kind == ProbeKind.Doorway ? I(p.Line) : "",
                         p.Kind == ProbeKind.Doorway ? F(p.Offset, 4) : "",
                         F(p.Center.X, 4), F(p.Center.Y, 4), F(p.Center.Z, 4), F(p.Radius, 4),
                         F(d.GapToReference, 4), F(d.GapToModel, 4)));

@@ -1,0 +1,124 @@
+using System.CommandLine;
+using System.Diagnostics;
+using System.Globalization;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Terminal;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Core.Chart;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
+using AcShadow.Core.Scenes.Compile;
+
+namespace AcShadow.Cli.Commands;
+
+/// <summary>
+/// `acshadow scene --landblock 0xXXYY --out DIR [--mover-radius R ...] [--tolerance P]`: compiles a
+/// landblock: every placed object gets the cheapest model that gives retail's answer on the chart's probes
+/// (grid, doorway lines, stability probes for every mover radius); writes compiled-scene.json, the BSP
+/// dumps only the objects left as retail need, scene-chart.csv and scene-chart.svg (docs/chart.md).
+/// A verb of its own rather than a batch flag: batch exports every object in full, in parallel, with an
+/// index; this probes and times one landblock's objects one after another, like chart, and writes less.
+/// </summary>
+public static class SceneCommand
+{
+    public static Command Create(CliConsole console)
+    {
+        var selection = new SelectionOptions();
+        var dat = CommonOptions.Dat();
+        var outDir = new Option<string>("--out") { Description = "output folder", HelpName = "DIR", Required = true };
+        var radius = new Option<string[]>("--mover-radius")
+        {
+            Description = $"a mover sphere radius in metres to be exact for (repeat for more; default {ChartOptions.DefaultProbeRadius.ToString(CultureInfo.InvariantCulture)}, a player); the first also sizes the grid",
+            HelpName = "R",
+        };
+        var tolerance = new Option<string?>("--tolerance") { Description = "allow a model whose false blocks are at most P % of an object's probes (never a false pass; default 0: exact)", HelpName = "P" };
+        var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {ChartOptions.DefaultSpacing.ToString(CultureInfo.InvariantCulture)})", HelpName = "S" };
+        var scale = CommonOptions.Scale();
+        var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
+        var command = new Command("scene", "Compile a landblock: each object's cheapest model that gives retail's answer, with the evidence and the scene's chart")
+        {
+            selection.Landblock, dat, selection.CellDat, outDir, radius, tolerance, spacing, scale, quiet,
+        };
+        command.SetAction(parse =>
+        {
+            if (parse.GetValue(selection.Landblock) is null)
+                throw new CliException(ExitCodes.Usage, "choose the landblock to compile: --landblock 0xXXYY");
+            var chosen = selection.Parse(parse, defaultToAll: false);
+            var radii = (parse.GetValue(radius) ?? []).Select(t => Number(t, "--mover-radius", "a positive number of metres", 0.48, v => v > 0)).Select(v => (float)v).ToArray();
+            var chart = new ChartOptions
+            {
+                ProbeRadius = radii.Length > 0 ? radii[0] : ChartOptions.DefaultProbeRadius,
+                MoverRadii = radii.Skip(1).ToArray(),
+                Spacing = parse.GetValue(spacing) is { } s ? (float)Number(s, "--spacing", "a positive number of metres", 0.25, v => v > 0) : ChartOptions.DefaultSpacing,
+            };
+            var options = new SceneCompileOptions
+            {
+                Chart = chart,
+                EntityScale = ArgumentParsing.Scale(parse.GetValue(scale)),
+                TolerancePercent = parse.GetValue(tolerance) is { } p ? Number(p, "--tolerance", "a percentage from 0 to 100", 0.5, v => v is >= 0 and <= 100) : 0,
+            };
+            if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
+            return Run(console, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options, parse.GetValue(quiet));
+        });
+        return command;
+    }
+
+    private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet)
+    {
+        var clock = Stopwatch.StartNew();
+        if (File.Exists(outDir))
+            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        using var dat = DatLocator.Open(datPath, cellDatPath, console);
+        var scene = SelectionOptions.Plan(selection, dat).Scene!;
+        if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
+                .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
+            console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
+        OutputFolder.Prepare(outDir);
+
+        var subjects = new ChartSubjects(dat.Portal);
+        var placed = PlacedObject.Of(scene);
+        var distinct = placed.Select(p => (p.Object.Kind, p.Object.Id)).Distinct().Count();
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || distinct < 2, "objects and cells compiled");
+        CompiledSceneReport report;
+        try
+        {
+            report = SceneCompiler.Compile(scene, subjects, options, new StopwatchQueryTimer(), (done, total) => progress.Report(new BatchProgress(done, total)));
+        }
+        finally
+        {
+            progress.Finish();
+        }
+        foreach (var (key, c) in report.Compiled)
+            DiagnosticPrinter.Print(console.Error, JsonIds.Format(key.Id), c.Diagnostics);
+        foreach (var cell in report.Cells)
+            DiagnosticPrinter.Print(console.Error, JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
+
+        var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        long bytes = 0;
+        foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
+
+        var t = report.Totals;
+        var w = console.Out;
+        w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"scene {LandblockIds.Short(scene.LandBlockInfoId)} from {dat.Description}: {placed.Count} placed object(s), {distinct} distinct, {scene.Cells.Count} indoor cell(s) kept as retail, mover radius {string.Join(", ", options.Chart.Radii.Select(r => r.ToString(CultureInfo.InvariantCulture) + " m"))}, tolerance {options.TolerancePercent} %"));
+        foreach (var group in placed.Select(p => p.Object).GroupBy(o => report.For(o)?.Model ?? "unresolved").OrderBy(g => g.Key, StringComparer.Ordinal))
+            w.WriteLine($"  {group.Key,-18} {group.Count(),4} object(s): {string.Join(' ', group.Select(o => JsonIds.Format(o.Id)).Distinct().Take(8))}{(group.Select(o => o.Id).Distinct().Count() > 8 ? " ..." : "")}");
+        var probes = report.Compiled.Values.SelectMany(c => c.Probes).Concat(report.Cells.SelectMany(c => c.Probes)).ToArray();
+        w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  probes checked: {probes.Length} ({string.Join(", ", new[] { ProbeKind.Grid, ProbeKind.Doorway }.Concat(ProbeKinds.Stability).Select(k => $"{ChartProbes.Count(probes, k)} {ProbeKinds.Name(k)}"))})"));
+        w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  whole scene over {t.Positions} mover positions: all-retail {t.Retail.MedianNs:0.0} ns, compiled {t.Compiled.MedianNs:0.0} ns per position (median); compiled agrees on {t.Agree} ({t.AgreementPercent:0.000}%), {t.FalsePass} false pass, {t.FalseBlock} false block"));
+        w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  wrote {files.Count} file(s) ({bytes} bytes, {CompiledSceneWriter.BspGfxObjs(report).Count} GfxObj and {report.Cells.Count(c => c.Bsp is not null)} cell BSP dump(s)) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
+        return ExitCodes.Ok;
+    }
+
+    private static double Number(string text, string option, string what, double example, Func<double, bool> ok)
+    {
+        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) && double.IsFinite(v) && ok(v)) return v;
+        throw new CliException(ExitCodes.Usage, $"{option}: '{text}' is not {what}: use e.g. {example.ToString(CultureInfo.InvariantCulture)}");
+    }
+}

@@ -1,0 +1,29 @@
+using AcShadow.Core.Chart.Models;
+
+namespace AcShadow.Core.Chart;
+
+/// <summary>
+/// Every probe one object is asked about, in order: the grid around everything any model sees, the
+/// doorway lines across the reference's footprint, then the stability probes on the reference's
+/// geometry and on every model's fitted solids (<see cref="StabilityProbes"/>). The chart and the scene compiler lay them the same way.
+/// </summary>
+public sealed record ChartProbes(Probe[] Probes, float GridSpacing, Bounds Bounds, DoorwayProbes.Opening? Doorway, IReadOnlyList<string> Notes)
+{
+    public static ChartProbes Lay(PreparedModel reference, IReadOnlyList<PreparedModel> models, ChartOptions options)
+    {
+        var everything = ShapeBounds.Of(models.SelectMany(p => p.Shapes));
+        // The reference's BSP parts, then every model's fitted solids (each once: the reference may be among the models).
+        var surfaces = reference.Shapes.Where(s => s.Bsp is not null)
+            .Concat(models.Where(m => !ReferenceEquals(m, reference)).SelectMany(m => m.Shapes).Where(s => s.Polytope is not null));
+        var grid = ProbeGrid.Build(everything, options);
+        var opening = DoorwayProbes.Find(ShapeBounds.Of(reference.Shapes));
+        var probes = grid.Probes.Concat(DoorwayProbes.Build(opening, options)).Concat(StabilityProbes.Build(surfaces, options)).ToArray();
+        var notes = new List<string>();
+        if (grid.Spacing != options.Spacing)
+            notes.Add(FormattableString.Invariant($"grid coarsened from {options.Spacing} m to {grid.Spacing} m to stay under {options.MaxGridProbes} probes"));
+        return new ChartProbes(probes, grid.Spacing, everything, opening, notes);
+    }
+
+    /// <summary>How many probes of a kind were laid.</summary>
+    public static int Count(IReadOnlyList<Probe> probes, ProbeKind kind) => probes.Count(p => p.Kind == kind);
+}

@@ -1,0 +1,28 @@
+using System.Text;
+using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Core.Chart.Output;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
+
+namespace AcShadow.Core.Scenes.Compile;
+
+/// <summary>
+/// Every file `acshadow scene` writes, in a fixed order: compiled-scene.json, the BSP dumps of the
+/// GfxObjs objects still modelled by retail need (and no others), each indoor cell's PhysicsBSP dump
+/// (cells/0x%08X.bsp.json, in the cell's frame), scene-chart.csv, scene-chart.svg.
+/// </summary>
+public static class CompiledSceneFiles
+{
+    public static IReadOnlyList<ChartFile> Render(CompiledSceneReport report, Func<uint, BspDump?> dumps)
+    {
+        var files = new List<ChartFile> { new(CompiledSceneFormat.Path, CompiledSceneWriter.Write(report)) };
+        foreach (var id in CompiledSceneWriter.BspGfxObjs(report))
+            if (dumps(id) is { } dump) files.Add(new ChartFile(BspFileFormat.PathFor(id), BspFileWriter.Write(dump)));
+        foreach (var cell in report.Cells)
+            if (cell.Bsp is not null) files.Add(new ChartFile(CompiledSceneWriter.CellBspPath(cell.Cell.Id), BspFileWriter.Write(cell.Physics!)));
+        files.Add(new ChartFile(CompiledSceneFormat.ChartCsvPath, new UTF8Encoding(false).GetBytes(SceneChartCsv.Write(report))));
+        files.Add(new ChartFile(CompiledSceneFormat.ChartSvgPath, new UTF8Encoding(false).GetBytes(SceneChartSvg.Write(report))));
+        return files;
+    }
+}

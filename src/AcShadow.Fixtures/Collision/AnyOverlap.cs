@@ -1,0 +1,16 @@
+using System.Numerics;
+
+namespace AcShadow.Fixtures.Collision;
+
+/// <summary>An object made of shapes: blocked when any of them blocks (CPhysicsObj::FindObjCollisions over its parts).</summary>
+public sealed class AnyOverlap(IReadOnlyList<ISphereOverlap> shapes) : ISphereOverlap
+{
+    private readonly ISphereOverlap[] _shapes = [.. shapes];
+
+    public bool Overlaps(Vector3 center, float radius)
+    {
+        foreach (var shape in _shapes)
+            if (shape.Overlaps(center, radius)) return true;
+        return false;
+    }
+}

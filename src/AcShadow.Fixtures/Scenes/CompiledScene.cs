@@ -1,0 +1,176 @@
+using System.Numerics;
+using System.Text.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Json;
+
+namespace AcShadow.Fixtures.Scenes;
+
+/// <summary>One placed object of a compiled scene: what it is, the model chosen for it and how many shapes that model tests.</summary>
+public sealed record CompiledObject(int Index, uint Id, string Kind, string? Model, int Shapes, Vector3 LandblockPosition, Quaternion LandblockRotation)
+{
+    /// <summary>The indoor cell the object stands in, when a cell placed it.</summary>
+    public uint? CellId { get; init; }
+}
+
+/// <summary>One indoor cell of a compiled scene: always its retail tree, in the cell's landblock-relative frame.</summary>
+public sealed record CompiledCell(uint CellId, string Model, Vector3 LandblockPosition, Quaternion LandblockRotation);
+
+/// <summary>
+/// compiled-scene.json (what <c>acshadow scene</c> writes) loaded: every object answered by the model the
+/// compiler chose for it — spheres, cylinders, part boxes, part convex hulls, or the part's retail BSP
+/// read from the dump beside it — and every indoor cell by its retail tree (cells/0x%08X.bsp.json, asked
+/// as <see cref="CellOverlapQuery"/> asks it), with the same float operations the tool checked them with.
+/// <see cref="Query"/> takes landblock-relative centres.
+/// </summary>
+public sealed class CompiledScene
+{
+    public uint LandblockId { get; }
+    public IReadOnlyList<float> MoverRadii { get; }
+    public double TolerancePercent { get; }
+    public IReadOnlyList<CompiledObject> Objects { get; }
+    public IReadOnlyList<CompiledCell> Cells { get; }
+    public SceneQuery Query { get; }
+
+    private CompiledScene(uint landblockId, IReadOnlyList<float> moverRadii, double tolerance, IReadOnlyList<CompiledObject> objects, IReadOnlyList<CompiledCell> cells, SceneQuery query)
+    {
+        LandblockId = landblockId;
+        MoverRadii = moverRadii;
+        TolerancePercent = tolerance;
+        Objects = objects;
+        Cells = cells;
+        Query = query;
+    }
+
+    /// <summary>Does a sphere at this landblock-relative centre touch anything of the scene, object or cell?</summary>
+    public bool Overlaps(Vector3 landblockCenter, float radius) => Query.Overlaps(landblockCenter, radius);
+
+    /// <summary>The cells whose walls, floors or ceilings a sphere at this landblock-relative centre touches.</summary>
+    public IEnumerable<uint> TouchingCells(Vector3 landblockCenter, float radius) => Query.TouchingCells(landblockCenter, radius);
+
+    /// <summary>Loads <c>compiled-scene.json</c> from a folder <c>acshadow scene --out</c> wrote, with the BSP dumps it names.</summary>
+    public static CompiledScene Load(string folder)
+    {
+        var path = Path.Combine(folder, "compiled-scene.json");
+        if (!File.Exists(path))
+            throw new FileNotFoundException($"{path} is missing; generate it with `acshadow scene --landblock 0xXXYY --out {folder}`", path);
+        try
+        {
+            return Read(File.ReadAllText(path), file => BspFileReader.Read(File.ReadAllText(Path.Combine(folder, file))));
+        }
+        catch (FormatException e)
+        {
+            throw new FormatException($"{path}: {e.Message}", e);
+        }
+        catch (JsonException e)
+        {
+            throw new FormatException($"{path}: not JSON: {e.Message}", e);
+        }
+    }
+
+    /// <summary>From the file's text; <paramref name="bspFile"/> reads a BSP dump by its folder-relative path.</summary>
+    public static CompiledScene Read(string json, Func<string, BspDump> bspFile)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var root = doc.RootElement;
+        FormatCheck.Require(root, FileFormats.CompiledScene, "compiled-scene.json");
+        var trees = new Dictionary<string, ISphereOverlap>(StringComparer.Ordinal);
+        var objects = new List<CompiledObject>();
+        var queries = new List<PlacedQuery>();
+        foreach (var o in BspFileReader.Arr(root, "objects"))
+        {
+            var frame = BspFileReader.Prop(o, "landblockFrame");
+            var position = BspFileReader.Vec(BspFileReader.Prop(frame, "origin"));
+            var rotation = BspFileReader.Quat(BspFileReader.Prop(frame, "orientation"));
+            var model = BspFileReader.Prop(o, "model");
+            var shapes = BspFileReader.Arr(o, "shapes").Select(s => Shape(s, trees, bspFile)).ToArray();
+            var id = JsonIds.TryParse(BspFileReader.Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
+            var index = BspFileReader.Int(o, "index");
+            var cellId = o.TryGetProperty("cellId", out var c) && c.ValueKind == JsonValueKind.String
+                ? JsonIds.TryParse(c.GetString()!, out var parsedCell) ? parsedCell : throw new FormatException("cellId is not a hex id")
+                : (uint?)null;
+            objects.Add(new CompiledObject(index, id, BspFileReader.Str(o, "kind"), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
+            var bound = BspFileReader.Prop(o, "bound");
+            if (shapes.Length == 0 || bound.ValueKind == JsonValueKind.Null) continue;
+            queries.Add(new PlacedQuery(index, id, position, rotation, new AnyOverlap(shapes),
+                BspFileReader.Vec(BspFileReader.Prop(bound, "center")), BspFileReader.Float(bound, "radius")));
+        }
+        var cells = new List<CompiledCell>();
+        var cellQueries = new List<SceneCell>();
+        foreach (var e in root.TryGetProperty("cells", out _) ? BspFileReader.Arr(root, "cells") : [])
+        {
+            var cellId = JsonIds.TryParse(BspFileReader.Str(e, "cellId"), out var parsed) ? parsed : throw new FormatException("cellId is not a hex id");
+            var frame = BspFileReader.Prop(e, "landblockFrame");
+            var position = BspFileReader.Vec(BspFileReader.Prop(frame, "origin"));
+            var rotation = BspFileReader.Quat(BspFileReader.Prop(frame, "orientation"));
+            var file = BspFileReader.Prop(e, "file");
+            if (file.ValueKind == JsonValueKind.Null) continue;
+            cells.Add(new CompiledCell(cellId, BspFileReader.Str(e, "model"), position, rotation));
+            try
+            {
+                cellQueries.Add(new SceneCell(cellId, new CellOverlapQuery(bspFile(file.GetString()!), position, rotation)));
+            }
+            catch (ArgumentException ex)
+            {
+                throw new FormatException($"cell {JsonIds.Format(cellId)}: {ex.Message}", ex);
+            }
+        }
+        var landblock = JsonIds.TryParse(BspFileReader.Str(root, "landblockId"), out var lb) ? lb : throw new FormatException("landblockId is not a hex id");
+        var radii = BspFileReader.Arr(root, "moverRadii").Select(BspFileReader.Number).ToArray();
+        return new CompiledScene(landblock, radii, BspFileReader.Prop(root, "tolerancePercent").GetDouble(), objects, cells, new SceneQuery(queries, cellQueries));
+    }
+
+    private static ISphereOverlap Shape(JsonElement s, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
+    {
+        var type = BspFileReader.Str(s, "type");
+        switch (type)
+        {
+            case "sphere":
+                var center = BspFileReader.Vec(BspFileReader.Prop(s, "center"));
+                var r = BspFileReader.Float(s, "radius");
+                return new SphereShape(center, r);
+            case "cylinder":
+                return new CylinderShape(BspFileReader.Vec(BspFileReader.Prop(s, "base")), BspFileReader.Float(s, "radius"), BspFileReader.Float(s, "height"));
+        }
+        var pose = BspFileReader.Prop(s, "pose");
+        var partPose = new PartPose(BspFileReader.Vec(BspFileReader.Prop(pose, "position")), BspFileReader.Quat(BspFileReader.Prop(pose, "orientation")), BspFileReader.Float(pose, "scale"));
+        ISphereOverlap part = type switch
+        {
+            "box" => new BoxSphereQuery(new OrientedBox(BspFileReader.Vec(BspFileReader.Prop(s, "center")), BspFileReader.Quat(BspFileReader.Prop(s, "axes")),
+                BspFileReader.Vec(BspFileReader.Prop(s, "halfExtents")))),
+            "hull" => Hull(s),
+            "bsp" => Tree(BspFileReader.Str(s, "file"), trees, bspFile),
+            _ => throw new FormatException($"shape type \"{type}\" is not sphere, cylinder, box, hull or bsp"),
+        };
+        return new PosedQuery(partPose, part);
+    }
+
+    private static ConvexPolytope Hull(JsonElement s)
+    {
+        var vertices = BspFileReader.Arr(s, "vertices").Select(BspFileReader.Vec).ToArray();
+        var faces = BspFileReader.Arr(s, "faces").Select((f, i) =>
+        {
+            var corners = BspFileReader.Arr(f, "vertices").Select(e => e.GetInt32()).ToArray();
+            if (corners.Length < 3 || corners.Any(c => c < 0 || c >= vertices.Length)) throw new FormatException($"hull face {i}: vertex indices must name at least 3 of the hull's vertices");
+            return new CompiledPolygon(i, new Plane(BspFileReader.Vec(BspFileReader.Prop(f, "normal")), BspFileReader.Float(f, "d")), corners.Select(c => vertices[c]).ToArray());
+        }).ToArray();
+        return new ConvexPolytope(vertices, faces);
+    }
+
+    private static ISphereOverlap Tree(string file, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
+    {
+        if (!trees.TryGetValue(file, out var query))
+            trees[file] = query = new BspSphereQuery(CompiledBsp.Compile(bspFile(file)));
+        return query;
+    }
+
+    private sealed class SphereShape(Vector3 center, float radius) : ISphereOverlap
+    {
+        public bool Overlaps(Vector3 c, float r) => SphereBounds.IsValidProbe(c, r) && SphereSphereTest.Touches(center, radius, c, r);
+    }
+
+    private sealed class CylinderShape(Vector3 baseCenter, float radius, float height) : ISphereOverlap
+    {
+        public bool Overlaps(Vector3 c, float r) => SphereBounds.IsValidProbe(c, r) && CylinderSphereTest.Touches(baseCenter, radius, height, c, r);
+    }
+}
