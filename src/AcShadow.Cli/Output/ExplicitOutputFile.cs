@@ -13,6 +13,7 @@ public static class ExplicitOutputFile
 {
     public static void Write(string path, byte[] content)
     {
+        OutputPaths.RequireNamed(path);
         var full = Path.GetFullPath(path);
         var kind = FileKinds.Of(full);
         try
