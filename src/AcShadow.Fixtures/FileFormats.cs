@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Shapes;
+
 namespace AcShadow.Fixtures;
 
 /// <summary>One kind of file acshadow writes: its <c>format</c> value, where it goes, its schema.</summary>

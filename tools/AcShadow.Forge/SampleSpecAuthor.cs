@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
 

@@ -11,6 +11,7 @@ using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 

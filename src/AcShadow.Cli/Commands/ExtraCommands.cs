@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcShadow.Cli.Infrastructure;
 
 namespace AcShadow.Cli.Commands;
 

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcShadow.Cli.Infrastructure;
 using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;

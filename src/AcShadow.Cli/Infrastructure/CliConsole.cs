@@ -1,4 +1,4 @@
-namespace AcShadow.Cli;
+namespace AcShadow.Cli.Infrastructure;
 
 /// <summary>
 /// Where a command prints, what it may assume about the terminal, and whether the user asked it to stop

@@ -1,4 +1,4 @@
-using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Infrastructure;
 

@@ -11,13 +11,13 @@ namespace AcShadow.Cli.Output;
 public static class AtomicOutput
 {
     public static long Write(string root, string relativePath, ReadOnlyMemory<byte> content) =>
-        Guarded(OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, content.Span, Durability.Renamed));
+        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, content.Span, Durability.Renamed));
 
     /// <summary>For content <paramref name="write"/> streams in large chunks.</summary>
     public static long Write(string root, string relativePath, Action<Stream> write) =>
-        Guarded(OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, write, Durability.Renamed));
+        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, write, Durability.Renamed));
 
-    private static long Guarded(string target, Func<string, long> write)
+    private static long Guarded(string root, string target, Func<string, long> write)
     {
         try
         {
@@ -27,9 +27,10 @@ public static class AtomicOutput
         {
             throw new CliException(ExitCodes.OutputFailed, $"--out: {e.Message}; move it away or pass another folder");
         }
-        catch (DirectoryNotFoundException e) when (e.Message.StartsWith("folder ", StringComparison.Ordinal))
+        // The folder moved or deleted under the run, whichever step of the write met it first.
+        catch (IOException) when (!Directory.Exists(root))
         {
-            throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message}: the output is incomplete, run again");
+            throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: folder {root} is gone (moved or deleted while this run wrote into it): the output is incomplete, run again");
         }
         // With SIGXFSZ handled (Program), a write past the file-size limit fails with EFBIG, which .NET reports
         // as ArgumentOutOfRangeException ("Specified file length was too large").

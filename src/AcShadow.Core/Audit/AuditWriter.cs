@@ -1,8 +1,9 @@
-using AcShadow.Core.Reports;
 using System.Text;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Core.Reports;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Audit;
 

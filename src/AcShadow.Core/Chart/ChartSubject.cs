@@ -1,5 +1,5 @@
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 

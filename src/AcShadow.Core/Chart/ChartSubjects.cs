@@ -1,7 +1,7 @@
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 

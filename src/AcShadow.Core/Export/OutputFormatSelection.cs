@@ -1,5 +1,6 @@
 using System.Text;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Export;
 

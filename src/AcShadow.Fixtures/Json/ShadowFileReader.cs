@@ -1,9 +1,10 @@
 using System.Text.Json;
-using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Shapes;
-using static AcShadow.Core.Json.BspFileReader;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
+using static AcShadow.Fixtures.Json.BspFileReader;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Fixtures.Json;
 
 /// <summary>
 /// Reads the shapes of an "acshadow.shadow/1" file back, so a consumer of the fixtures (or the collision

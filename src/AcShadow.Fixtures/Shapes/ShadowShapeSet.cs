@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Shapes;
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>Everything the builder decided for one Setup: the shapes, the placement used, and what it could not resolve.</summary>
 public sealed record ShadowShapeSet(

@@ -1,13 +1,13 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
-using AcShadow.Forge;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Bsp;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
+using AcShadow.Forge;
 
 namespace AcShadow.Tests.Forge;
 
@@ -311,7 +311,7 @@ public sealed class PhysicsBspBuilderTests
     {
         var (portal, _) = SampleDats.Build();
         using var dat = DatDatabase.Open(new MemoryStream(portal), "sample_portal.dat");
-        var trees = dat.ListIds(DatObjectKind.GfxObj).Select(id => BspExtractor.Extract(dat.ReadGfxObj(id)!)).OfType<AcShadow.Core.Bsp.BspDump>()
+        var trees = dat.ListIds(DatObjectKind.GfxObj).Select(id => BspExtractor.Extract(dat.ReadGfxObj(id)!)).OfType<AcShadow.Fixtures.Bsp.BspDump>()
             .Select(CompiledBsp.Compile).ToArray();
         Assert.True(trees.Length >= 10);
         Assert.DoesNotContain(trees.SelectMany(t => t.Diagnostics), d => d.Code == CollisionDiagnosticCodes.InertSolidLeaf);

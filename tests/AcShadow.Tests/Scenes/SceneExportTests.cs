@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Text.Json;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Scenes;
@@ -138,7 +139,7 @@ public class SceneExportTests
     {
         using var portal = SampleDat.OpenPortal();
         var gfx = portal.ReadGfxObj(0x01003002)!;
-        var set = BareGfxObjShape.Build(gfx, portal.ReadGfxObj, new Core.Shapes.ShapeBuildOptions(Core.Shapes.ShapePolicy.Retail, 2f));
+        var set = BareGfxObjShape.Build(gfx, portal.ReadGfxObj, new Core.Shapes.ShapeBuildOptions(ShapePolicy.Retail, 2f));
         var shape = Assert.Single(set.Shapes);
         Assert.Equal(0x01003002u, shape.GfxObjId);
         Assert.Equal(2f, shape.Scale);

@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Numerics;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Forge.Spec;
 
 namespace AcShadow.Forge.Geometry;

@@ -1,4 +1,5 @@
 using System.Text.Json.Serialization;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Forge.Spec;
 

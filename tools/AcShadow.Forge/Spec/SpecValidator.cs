@@ -1,8 +1,11 @@
-using AcShadow.Core.Json;
 using System.Globalization;
 using System.Numerics;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Forge.Spec;
 

@@ -1,10 +1,12 @@
 using System.Numerics;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart.Models;
 
 /// <summary>
-/// What the buggy client registered (seed §1): ONE cylinder — the first CylSphere; else the first Sphere as
+/// What the buggy client registered: ONE cylinder — the first CylSphere; else the first Sphere as
 /// a cylinder of height 2r based at the sphere's centre (as the seed's builder places it); else the Setup's
 /// Radius × Height standing at the entity origin. On a door that is a 14 cm "soda can".
 /// </summary>

@@ -1,5 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart.Models;
 
