@@ -70,7 +70,7 @@ public static class Program
     private static void Print(CampaignResult r)
     {
         Console.WriteLine($"cases: {r.Cases} in {r.Elapsed.TotalSeconds:0.0} s = {r.CasesPerSecond:0.0} cases/s");
-        Console.WriteLine($"exit codes (dump + batch per case): {string.Join(", ", r.ExitCodeCounts.Select(kv => $"{kv.Key}: {kv.Value}"))}");
+        Console.WriteLine($"exit codes (dump, batch, chart, verify per case): {string.Join(", ", r.ExitCodeCounts.Select(kv => $"{kv.Key}: {kv.Value}"))}");
         Console.WriteLine($"slowest: case {r.SlowestCase} in {r.SlowestTime.TotalMilliseconds:0} ms: {r.SlowestDescription}");
         Console.WriteLine($"failures: {r.FailedCases} case(s), {r.FailureCounts.Count} kind(s)");
         foreach (var found in r.Failures.DistinctBy(f => f.Failure.Signature))
