@@ -102,12 +102,12 @@ public static class ForgeApp
         var portalPath = Path.Combine(dir, PortalFileName);
         // Flushed: a dat is a few large files, costly to forge again, that a power cut must not leave empty.
         AtomicFile.Write(portalPath, dats.Portal, Durability.Flushed);
-        stdout.WriteLine($"wrote {portalPath} ({dats.Portal.Length} bytes; {dats.GfxObjCount} GfxObjs, {dats.SetupCount} Setups)");
+        stdout.WriteLine($"wrote {portalPath} ({dats.Portal.Length} bytes; {dats.GfxObjCount} GfxObjs, {dats.SetupCount} Setups{(dats.EnvironmentCount > 0 ? $", {dats.EnvironmentCount} Environments" : "")})");
         if (dats.Cell is { } cell)
         {
             var cellPath = Path.Combine(dir, CellFileName);
             AtomicFile.Write(cellPath, cell, Durability.Flushed);
-            stdout.WriteLine($"wrote {cellPath} ({cell.Length} bytes; {dats.LandblockCount} LandBlockInfos)");
+            stdout.WriteLine($"wrote {cellPath} ({cell.Length} bytes; {dats.LandblockCount} LandBlockInfos{(dats.EnvCellCount > 0 ? $", {dats.EnvCellCount} EnvCells" : "")})");
         }
     }
 

@@ -33,13 +33,15 @@ public static class BatchCommand
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var incremental = new Option<bool>("--incremental") { Description = "skip Setups whose dat bytes (and their parts') did not change since the last --incremental run into DIR, and leave files whose content would not change untouched" };
         var format = FormatOption.Create();
+        var cells = new Option<bool>("--cells") { Description = "with --landblock: also write its indoor cells (the default)" };
+        var noCells = new Option<bool>("--no-cells") { Description = "with --landblock: objects only, no indoor cells" };
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
         {
             outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            policy, scale, jobs, quiet, incremental, format,
+            cells, noCells, policy, scale, jobs, quiet, incremental, format,
         };
         command.SetAction(parse => Run(console,
-            selection.Parse(parse, defaultToAll: false),
+            WithCells(selection.Parse(parse, defaultToAll: false), parse.GetValue(cells), parse.GetValue(noCells)),
             parse.GetValue(dat),
             parse.GetValue(selection.CellDat),
             parse.GetValue(outDir)!,
@@ -49,6 +51,13 @@ public static class BatchCommand
             parse.GetValue(incremental),
             FormatOption.Parse(parse.GetValue(format))));
         return command;
+    }
+
+    private static BatchSelection WithCells(BatchSelection selection, bool cells, bool noCells)
+    {
+        if (cells && noCells) throw new CliException(ExitCodes.Usage, "--cells and --no-cells contradict each other: give one");
+        if ((cells || noCells) && selection.Landblock is null) throw new CliException(ExitCodes.Usage, $"{(cells ? "--cells" : "--no-cells")} applies to a landblock's scene: add --landblock 0xXXYY");
+        return selection with { Cells = !noCells };
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
@@ -67,7 +76,7 @@ public static class BatchCommand
         {
             Formats = formats,
         };
-        RefuseForeignFiles(outDir, plan);
+        RefuseForeignFiles(outDir, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         // A second view over the same archive; `dat` owns and disposes the archive.
         var source = new DatDatabase(dat.Portal.Archive, cacheCapacity: 256);
@@ -138,7 +147,7 @@ public static class BatchCommand
         var o = console.Out;
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, scale {options.EntityScale}): " +
-            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s)"));
+            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s){(result.Cells > 0 ? $", {result.Cells} cell(s)" : "")}"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
@@ -154,10 +163,10 @@ public static class BatchCommand
     /// <summary>
     /// Files stream to disk as they are made, so the check that no file acshadow does not own gets replaced
     /// runs first, over what is already there: every file in the places a batch writes (the planned Setups'
-    /// shadow files, gfxobjs/, scene.json, index.json, incremental.json) that the folder's index.json does
+    /// shadow files, gfxobjs/, scene.json, cells/, index.json, incremental.json) that the folder's index.json does
     /// not list must carry the signature of the acshadow format its name stands for.
     /// </summary>
-    private static void RefuseForeignFiles(string outDir, BatchPlan plan)
+    private static void RefuseForeignFiles(string outDir, BatchPlan plan, OutputFormats formats)
     {
         var listed = IndexListing.Read(outDir);
         var candidates = new List<(string Path, byte[] Head)>();
@@ -183,6 +192,13 @@ public static class BatchCommand
                     candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
             }
         if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
+        foreach (var cell in plan.Scene?.Cells ?? [])
+        {
+            Consider(Fixtures.Cells.CellFileFormat.PathFor(cell.Id), Fixtures.Cells.CellFileFormat.Format);
+            var acdream = Fixtures.Cells.CellFileFormat.AcdreamPathFor(cell.Id);
+            if (formats.HasFlag(OutputFormats.Acdream) && NeedsCheck(acdream))
+                candidates.Add((acdream, System.Text.Encoding.UTF8.GetBytes("{\n  \"CellId\": 0,\n")));
+        }
         Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
         ForeignFileGuard.Refuse(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);

@@ -12,6 +12,8 @@ public static class ExtraCommands
         yield return AuditCommand.Create(console);
         yield return VerifyCommand.Create(console);
         yield return ChartCommand.Create(console);
+        yield return ViewCommand.Create(console);
+        yield return DoctorCommand.Create(console);
         yield return FormatsCommand.Create(console);
         yield return CompletionsCommand.Create(console);
     }

@@ -11,7 +11,7 @@ namespace AcShadow.Cli.Output;
 /// </summary>
 public static class AbandonedTemporaries
 {
-    private static readonly string[] OutputExtensions = [".json", ".csv", ".svg", WriteProbe.Name];
+    private static readonly string[] OutputExtensions = [".json", ".csv", ".svg", ".glb", WriteProbe.Name];
 
     public static void Remove(string root)
     {

@@ -21,8 +21,12 @@ public sealed class DatDatabase : IDatSource, IDisposable
         if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
         _archive = archive;
         _capacity = cacheCapacity;
-        // The iteration needs the whole directory: read only when something asks (a dump never does).
-        _info = new Lazy<DatSourceInfo>(() => new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize));
+        // Read only when something asks (a dump never does): the fallback needs the whole directory.
+        _info = new Lazy<DatSourceInfo>(() =>
+        {
+            var (iteration, source) = DatIteration.Of(archive);
+            return new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, iteration, archive.Header.BlockSize) { IterationSource = source };
+        });
     }
 
     private readonly Lazy<DatSourceInfo> _info;
@@ -35,6 +39,8 @@ public sealed class DatDatabase : IDatSource, IDisposable
     public Setup? ReadSetup(uint id) => Decode(id, DatObjectKind.Setup, Setup.Read, s => s.Id);
     public GfxObj? ReadGfxObj(uint id) => Decode(id, DatObjectKind.GfxObj, GfxObj.Read, g => g.Id);
     public LandBlockInfo? ReadLandBlockInfo(uint id) => Decode(id, DatObjectKind.LandBlockInfo, LandBlockInfo.Read, l => l.Id);
+    public EnvCell? ReadEnvCell(uint id) => Decode(id, DatObjectKind.EnvCell, EnvCell.Read, c => c.Id);
+    public CellEnvironment? ReadEnvironment(uint id) => Decode(id, DatObjectKind.Environment, CellEnvironment.Read, e => e.Id);
 
     public IReadOnlyList<uint> ListIds(DatObjectKind kind) =>
         _archive.Entries.Where(e => kind.Contains(e.Id)).Select(e => e.Id).ToArray();

@@ -6,6 +6,10 @@ public enum DatObjectKind
     GfxObj,
     Setup,
     LandBlockInfo,
+    /// <summary>An indoor cell (cell dat, 0xXXYY0100-0xXXYYFFFD).</summary>
+    EnvCell,
+    /// <summary>The cell shapes EnvCells use (portal dat, 0x0D000000-0x0D00FFFF).</summary>
+    Environment,
 }
 
 public static class DatObjectKinds
@@ -15,6 +19,8 @@ public static class DatObjectKinds
         DatObjectKind.GfxObj => id is >= 0x01000000 and <= 0x0100FFFF,
         DatObjectKind.Setup => id is >= 0x02000000 and <= 0x0200FFFF,
         DatObjectKind.LandBlockInfo => (id & 0xFFFF) == 0xFFFE,
+        DatObjectKind.EnvCell => (id & 0xFFFF) is >= 0x0100 and <= 0xFFFD,
+        DatObjectKind.Environment => id is >= 0x0D000000 and <= 0x0D00FFFF,
         _ => false,
     };
 
@@ -23,6 +29,8 @@ public static class DatObjectKinds
         DatObjectKind.GfxObj => "0x01000000-0x0100FFFF",
         DatObjectKind.Setup => "0x02000000-0x0200FFFF",
         DatObjectKind.LandBlockInfo => "0xXXYYFFFE",
+        DatObjectKind.EnvCell => "0xXXYY0100-0xXXYYFFFD",
+        DatObjectKind.Environment => "0x0D000000-0x0D00FFFF",
         _ => "?",
     };
 }

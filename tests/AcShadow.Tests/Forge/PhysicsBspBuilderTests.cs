@@ -96,7 +96,9 @@ public sealed class PhysicsBspBuilderTests
         var leaves = BspInvariants.Leaves(closed.PhysicsBsp!).ToArray();
         Assert.Contains(leaves, l => l.Solid != 0);
         Assert.All(leaves.Where(l => l.Solid != 0), l => Assert.NotEmpty(l.Polygons));
-        Assert.DoesNotContain(leaves, l => l.Polygons.Count == 0);
+        // Empty sides are leaves too (every internal node has both children), never solid.
+        Assert.Contains(leaves, l => l.Polygons.Count == 0);
+        Assert.All(leaves.Where(l => l.Polygons.Count == 0), l => Assert.Equal(0, l.Solid));
 
         var open = Gfx(new MeshBuilder().Grid((i, j) => new(i, j, 0), 6, 6).Grid((i, k) => new(i, 3, k), 6, 2));
         Assert.DoesNotContain(BspInvariants.Leaves(open.PhysicsBsp!), l => l.Solid != 0);

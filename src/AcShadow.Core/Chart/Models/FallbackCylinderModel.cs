@@ -1,7 +1,4 @@
-using System.Numerics;
-using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart.Models;
 
@@ -15,26 +12,6 @@ public sealed class FallbackCylinderModel : IShapeModel
     public string Name => "fallback-cylinder";
     public string Description => "one cylinder: the first CylSphere, else the first Sphere (h = 2r), else Setup Radius x Height at the origin (the buggy client)";
 
-    public PreparedModel Prepare(ChartSubject subject)
-    {
-        var setup = subject.Setup;
-        var scale = subject.EntityScale;
-        ShadowShape shape;
-        if (setup.CylSpheres.Count > 0)
-        {
-            var c = setup.CylSpheres[0];
-            shape = new ShadowShape(ShapeSource.CylSphere, 0, null, CollisionType.Cylinder, c.Origin * scale, Quaternion.Identity, scale, c.Radius * scale, c.Height * scale, null);
-        }
-        else if (setup.Spheres.Count > 0)
-        {
-            var s = setup.Spheres[0];
-            shape = new ShadowShape(ShapeSource.Sphere, 0, null, CollisionType.Cylinder, s.Center * scale, Quaternion.Identity, scale, s.Radius * scale, 2f * s.Radius * scale, null);
-        }
-        else
-        {
-            // Setup.Radius × Setup.Height has no source list of its own; it is reported as the Setup's sphere -1.
-            shape = new ShadowShape(ShapeSource.Sphere, -1, null, CollisionType.Cylinder, Vector3.Zero, Quaternion.Identity, scale, setup.Radius * scale, setup.Height * scale, null);
-        }
-        return PreparedModel.Of([shape], subject);
-    }
+    public PreparedModel Prepare(ChartSubject subject) =>
+        PreparedModel.Of([SetupPrimitives.Of(subject.Setup).FallbackCylinder(subject.EntityScale)], subject);
 }
