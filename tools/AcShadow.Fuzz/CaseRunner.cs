@@ -5,10 +5,11 @@ using AcShadow.Cli.Infrastructure;
 namespace AcShadow.Fuzz;
 
 /// <summary>
-/// Runs one case: writes the damaged dats to a scratch folder and runs `dump`, `batch`, `chart` (a coarse
-/// grid) and `verify` on them through the real CLI in-process (<see cref="AcShadowApp.Run"/>, output
-/// captured), on a thread a watchdog waits on (chart: the dumped Setup on a 2 m grid); verify reads the batch's fixtures after one byte of one of
-/// them is damaged too, so it meets mutated fixtures as well as a mutated dat.
+/// Runs one case: writes the damaged dats to a scratch folder and runs `dump` and `batch` on them through
+/// the real CLI in-process (<see cref="AcShadowApp.Run"/>, output captured), on a thread a watchdog waits
+/// on; a deep case also runs `chart` (the dumped Setup on a coarse grid) and `verify`, which reads the
+/// batch's fixtures after one byte of one of them is damaged too, so it meets mutated fixtures as well as
+/// a mutated dat.
 /// A case fails on an undocumented exit code or an internal error (exit 1), on a corrupt-object message
 /// without "corrupt dat" and the id, on a run past the time limit, on allocating more than the memory limit,
 /// or on output that is not whole.
@@ -23,7 +24,11 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
 
     private const int MainThreadStack = 8 << 20; // a process's main thread: recursion limits match the CLI's
 
-    public CaseOutcome Run(FuzzInput input, string name)
+    /// <summary>Grid spacing of a deep case's chart (metres): coarse, since what a case fuzzes is chart reading
+    /// the damaged Setup and its parts, not the density of its grid.</summary>
+    public const string ChartSpacing = "4";
+
+    public CaseOutcome Run(FuzzInput input, string name, bool deep = true)
     {
         var folder = Path.Combine(scratch, name);
         Directory.CreateDirectory(folder);
@@ -32,15 +37,17 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
         File.WriteAllBytes(portal, input.Portal);
         File.WriteAllBytes(cell, input.Cell);
         var batchFolder = Path.Combine(folder, "batch");
-        string[][] commands =
+        string[][] all =
         [
             ["dump", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "dump"),
                 "--policy", input.Policy, "--format", input.Format, "--verbose"],
             ["batch", "--all", "--landblock", $"0x{input.Landblock:X4}", "--dat", portal, "--cell-dat", cell,
                 "--out", batchFolder, "--jobs", "1", "--quiet", "--policy", input.Policy, "--format", input.Format, "--verbose"],
-            ["chart", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "chart"), "--spacing", "2", "--quiet", "--verbose"],
+            ["chart", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "chart"), "--spacing", ChartSpacing, "--quiet", "--verbose"],
             ["verify", "--fixtures", batchFolder, "--dat", portal, "--cell-dat", cell, "--jobs", "1", "--verbose"],
         ];
+        var commands = deep ? all : all[..2];
+        var times = new Dictionary<string, TimeSpan>(StringComparer.Ordinal);
 
         var clock = Stopwatch.StartNew();
         var exits = new List<int>();
@@ -51,7 +58,7 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             // Counted on the case's own thread (batch runs --jobs 1, so decoding happens here), so other
             // work in the process, such as tests running beside the campaign, does not count.
             var before = GC.GetAllocatedBytesForCurrentThread();
-            failure = RunCommands(commands, exits, () =>
+            failure = RunCommands(commands, exits, times, () =>
             {
                 // The batch's output is judged whole before one of its files is damaged for verify.
                 if (OutputCheck.Problem(batchFolder) is { } partial) return new CaseFailure("partial output", partial);
@@ -64,16 +71,16 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
         var finished = worker.Join(timeLimit);
         clock.Stop();
         if (!finished)
-            return new CaseOutcome(new CaseFailure($"{commands[Math.Min(exits.Count, commands.Length - 1)][0]}: hang", $"still running after {timeLimit.TotalSeconds:0.###} s"), clock.Elapsed, exits);
+            return new CaseOutcome(new CaseFailure($"{commands[Math.Min(exits.Count, commands.Length - 1)][0]}: hang", $"still running after {timeLimit.TotalSeconds:0.###} s"), clock.Elapsed, exits.ToArray());
         if (failure is null && allocated > memoryLimitBytes)
             failure = new CaseFailure("memory", $"allocated {allocated >> 20} MiB (limit {memoryLimitBytes >> 20} MiB)");
         if (failure is null && OutputCheck.Problem(Path.Combine(folder, "dump")) is { } problem)
             failure = new CaseFailure("partial output", problem);
         TryDelete(folder);
-        return new CaseOutcome(failure, clock.Elapsed, exits);
+        return new CaseOutcome(failure, clock.Elapsed, exits) { CommandTimes = times };
     }
 
-    private static CaseFailure? RunCommands(string[][] commands, List<int> exits, Func<CaseFailure?> beforeVerify)
+    private static CaseFailure? RunCommands(string[][] commands, List<int> exits, Dictionary<string, TimeSpan> times, Func<CaseFailure?> beforeVerify)
     {
         foreach (var args in commands)
         {
@@ -81,6 +88,7 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             var output = new StringWriter();
             var error = new StringWriter();
             int code;
+            var started = Stopwatch.GetTimestamp();
             try
             {
                 code = AcShadowApp.Run(args, new CliConsole(output, error, false, _ => null));
@@ -89,6 +97,10 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             {
                 // AcShadowApp catches everything; reaching here means it let an exception escape.
                 return new CaseFailure($"{args[0]}: escaped {e.GetType().Name}", e.ToString());
+            }
+            finally
+            {
+                lock (times) times[args[0]] = Stopwatch.GetElapsedTime(started);
             }
             exits.Add(code);
             if (Judge(args[0], code, error.ToString()) is { } failure) return failure;

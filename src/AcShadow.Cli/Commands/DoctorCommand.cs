@@ -40,7 +40,7 @@ public static class DoctorCommand
         var report = DoctorRunner.Run(dat.Portal.Archive, dat.Cell?.Archive, options);
         console.Out.Write(DoctorReportWriter.Summary(report, dat.IsSample ? "the built-in synthetic sample" : "your dat"));
         if (output is null) return ExitCodes.Ok;
-        ExplicitOutputFile.Write(output, DoctorReportWriter.Json(report));
+        ExplicitOutputFile.Write(output, DoctorReportWriter.Json(report), "doctor.json");
         console.Out.WriteLine($"wrote {output} ({DoctorReport.Format}: ids, counts, hashes and verdicts only)");
         return ExitCodes.Ok;
     }

@@ -11,7 +11,7 @@ namespace AcShadow.Cli.Output;
 /// </summary>
 public static class ExplicitOutputFile
 {
-    public static void Write(string path, byte[] content)
+    public static void Write(string path, byte[] content, string example = "audit.csv")
     {
         OutputPaths.RequireNamed(path);
         var full = Path.GetFullPath(path);
@@ -25,8 +25,8 @@ public static class ExplicitOutputFile
             }
             if (FileKinds.Of(full, followLinks: true) is var target && target is FileKind.Folder or FileKind.Missing)
                 throw new CliException(ExitCodes.OutputFailed, target == FileKind.Folder
-                    ? $"--out: {path} leads to a folder: pass a file name, e.g. audit.csv"
-                    : $"--out: {path} is a symbolic link that leads nowhere (or round in a loop): pass a file name, e.g. audit.csv");
+                    ? $"--out: {path} leads to a folder: pass a file name, e.g. {example}"
+                    : $"--out: {path} is a symbolic link that leads nowhere (or round in a loop): pass a file name, e.g. {example}");
             using var stream = new FileStream(full, FileMode.Create, FileAccess.Write, FileShare.ReadWrite, bufferSize: 0);
             stream.Write(content);
         }

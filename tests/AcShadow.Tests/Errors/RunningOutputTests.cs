@@ -73,6 +73,26 @@ public class RunningOutputTests
         Assert.DoesNotContain(FolderLock.FileName, dir.Files());
     }
 
+    [Theory]
+    [InlineData("dump", "--setup", "0x020019FF")]
+    [InlineData("dump", "--cell", "0xA9B40100")]
+    [InlineData("view", "--setup", "0x020019FF")]
+    [InlineData("chart", "--setup", "0x020019FF")]
+    public void Every_folder_writer_refuses_a_folder_another_run_holds(params string[] command)
+    {
+        using var dir = new TempDir();
+        using var held = FolderLock.TryAcquire(dir.Path);
+        Assert.NotNull(held);
+
+        var run = CliRun.Of([.. command, "--out", dir.Path]);
+
+        Assert.Equal(6, run.ExitCode);
+        // One error line (beside the notes on the synthetic sample and a Debug build), no stack trace.
+        Assert.Contains($"--out: another acshadow run is writing into {dir.Path}", Assert.Single(run.ErrorLines, l => l.StartsWith("acshadow: --out", StringComparison.Ordinal)));
+        Assert.DoesNotContain(run.ErrorLines, l => l.TrimStart().StartsWith("at ", StringComparison.Ordinal));
+        Assert.Equal([FolderLock.FileName], dir.Files());
+    }
+
     [Fact]
     public void A_lock_held_by_a_killed_process_is_gone_with_it()
     {

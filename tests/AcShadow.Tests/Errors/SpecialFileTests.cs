@@ -43,6 +43,41 @@ public class SpecialFileTests
         Assert.Contains("acshadow.bsp/1", File.ReadAllText(linkedTo));
     }
 
+    [Theory]
+    [InlineData("cells/0xA9B40100.cell.json", "dump", "--cell", "0xA9B40100")]
+    [InlineData("0x020019FF.glb", "view", "--setup", "0x020019FF")]
+    public void A_FIFO_where_a_cell_file_or_a_view_model_belongs_is_refused_unopened(string relative, params string[] command)
+    {
+        using var dir = new TempDir();
+        var fifo = Path.Combine(dir.Path, relative);
+        Directory.CreateDirectory(Path.GetDirectoryName(fifo)!);
+        MakeFifo(fifo);
+
+        // A real process: were the FIFO opened, the run would hang (BuiltCli fails the test after 2 minutes).
+        var (code, _, error) = BuiltCli.Run([], [.. command, "--out", dir.Path]);
+
+        Assert.Equal(6, code);
+        var line = Assert.Single(error.Split('\n', StringSplitOptions.RemoveEmptyEntries), l => !l.Contains("SYNTHETIC"));
+        Assert.Contains("(a FIFO (named pipe)) would be replaced but is not acshadow output", line);
+        Assert.Equal(FileKind.Fifo, FileKinds.Of(fifo));
+    }
+
+    [Fact]
+    public void Doctor_out_through_a_link_writes_the_file_it_leads_to_and_keeps_the_link()
+    {
+        using var dir = new TempDir();
+        var target = Path.Combine(dir.Path, "report.json");
+        File.WriteAllText(target, "an older report");
+        var link = Path.Combine(dir.Path, "link.json");
+        File.CreateSymbolicLink(link, target);
+
+        var run = CliRun.Of("doctor", "--out", link);
+
+        Assert.Equal(0, run.ExitCode);
+        Assert.Equal(FileKind.SymbolicLink, FileKinds.Of(link));
+        Assert.Contains("\"format\": \"acshadow.doctor/1\"", File.ReadAllText(target));
+    }
+
     [Fact]
     public void The_atomic_writer_never_replaces_a_device_a_FIFO_or_a_link()
     {

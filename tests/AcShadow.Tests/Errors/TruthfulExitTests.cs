@@ -57,18 +57,23 @@ public class TruthfulExitTests
     [InlineData("dump")]
     [InlineData("batch")]
     [InlineData("chart")]
+    [InlineData("view")]
+    [InlineData("dump-cell")]
     public void An_empty_out_is_a_usage_error(string command)
     {
         string[] args = command switch
         {
             "dump" => ["dump", "--setup", "0x020019FF", "--out", ""],
             "batch" => ["batch", "--doors", "--out", ""],
+            "view" => ["view", "--setup", "0x020019FF", "--out", ""],
+            "dump-cell" => ["dump", "--cell", "0xA9B40100", "--out", ""],
             _ => ["chart", "--setup", "0x020019FF", "--out", ""],
         };
         var run = CliRun.Of(args);
         Assert.Equal(2, run.ExitCode);
         Assert.Contains("--out: the path is empty", Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC")));
         Assert.Equal(2, CliRun.Of("audit", "--doors", "--out", "").ExitCode);
+        Assert.Equal(2, CliRun.Of("doctor", "--out", "").ExitCode);
     }
 
     [Fact]

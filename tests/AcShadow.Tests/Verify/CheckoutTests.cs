@@ -45,6 +45,23 @@ public class CheckoutTests
     }
 
     [Fact]
+    public void An_index_whose_strings_hold_bytes_that_are_not_UTF8_is_not_a_batch_index()
+    {
+        using var dir = Batch();
+        var index = Path.Combine(dir.Path, "index.json");
+        var bytes = File.ReadAllBytes(index);
+        // A lone 0xE0 starts a three-byte sequence that never comes: valid JSON structure, invalid UTF-8.
+        var at = bytes.AsSpan().IndexOf("\"path\": \""u8) + "\"path\": \""u8.Length;
+        bytes[at] = 0xE0;
+        File.WriteAllBytes(index, bytes);
+
+        var run = CliRun.Of("verify", "--fixtures", dir.Path);
+
+        Assert.Equal(2, run.ExitCode);
+        Assert.Contains("is not a batch index: a string is not UTF-8 text", Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC")));
+    }
+
+    [Fact]
     public void The_repository_keeps_fixture_bytes_exact_on_checkout()
     {
         var attributes = Path.Combine(Fixtures.CommittedFixturesTests.RepositoryFixtures(), "..", ".gitattributes");
