@@ -1,20 +1,19 @@
-using System.Buffers.Binary;
+using System.Buffers;
 using System.Globalization;
 using System.Numerics;
-using SharpGLTF.Schema2;
-using SharpGLTF.Transforms;
+using System.Text.Json;
 
 namespace AcShadow.Core.View;
 
 /// <summary>
-/// A <see cref="ViewScene"/> as one binary glTF 2.0 file (SharpGLTF writes it). Nodes: the scene's root
-/// (carrying a landblock's world origin), one node per group, one per object in it (its frame), one per
-/// shape with its mesh. Units are metres. The dat is Z-up (x east, y north, z up); glTF is Y-up with +Z
-/// toward the viewer, so every position, normal and rotation axis is converted explicitly as
-/// (x, y, z)_dat → (x, z, −y)_glTF, a proper rotation (−90° about x): winding and handedness are kept.
-/// Materials: one per group and sidedness (glTF sets double-sidedness per material). No timestamps; the same
-/// scene gives the same bytes. No <c>extras</c>: SharpGLTF's setter for them is not trimming-safe, and the
-/// tool ships as a Native AOT binary.
+/// A <see cref="ViewScene"/> as one binary glTF 2.0 file, written here (JSON by <see cref="Utf8JsonWriter"/>,
+/// the chunks by <see cref="GlbContainer"/>) so the Native AOT binary carries no glTF library. Nodes, in
+/// depth-first order: the scene's root (carrying a landblock's world origin), one node per group, one per
+/// object in it (its frame), one per shape with its mesh. Units are metres. The dat is Z-up (x east, y north,
+/// z up); glTF is Y-up with +Z toward the viewer, so every position, normal and rotation axis is converted
+/// explicitly as (x, y, z)_dat → (x, z, −y)_glTF, a proper rotation (−90° about x): winding and handedness
+/// are kept. Materials: one per group and sidedness (glTF sets double-sidedness per material), in order of
+/// first use. No timestamps, no <c>extras</c>; the same scene gives the same bytes.
 /// </summary>
 public static class GlbWriter
 {
@@ -24,92 +23,175 @@ public static class GlbWriter
 
     public static Quaternion ToGltf(Quaternion dat) => new(dat.X, dat.Z, -dat.Y, dat.W);
 
+    private sealed record Node(string Name, Vector3 Translation, Quaternion Rotation, int? Mesh)
+    {
+        public List<int> Children { get; } = [];
+    }
+
+    private sealed record Primitive(int Position, int Normal, int Indices, int Material);
+
+    private sealed record Mesh(string Name, IReadOnlyList<Primitive> Primitives);
+
+    private sealed record Material(string Name, Vector4 BaseColour, bool DoubleSided);
+
     public static byte[] Write(ViewScene view)
     {
-        var model = ModelRoot.CreateModel();
-        model.Asset.Generator = Generator;
-        var scene = model.UseScene(view.Name);
-        var root = scene.CreateNode(view.Name);
-        if (view.WorldOrigin != Vector3.Zero) root.LocalTransform = new AffineTransform(null, null, ToGltf(view.WorldOrigin));
-        var meshes = new Dictionary<ViewShape, Mesh>(ReferenceEqualityComparer.Instance);
+        var nodes = new List<Node>();
+        var meshes = new List<Mesh>();
+        var materials = new List<Material>();
+        var data = new GltfBinaryData();
+        var meshOf = new Dictionary<ViewShape, int?>(ReferenceEqualityComparer.Instance);
+
+        int AddNode(Node node, int? parent)
+        {
+            nodes.Add(node);
+            if (parent is { } p) nodes[p].Children.Add(nodes.Count - 1);
+            return nodes.Count - 1;
+        }
+
+        var root = AddNode(new Node(view.Name, ToGltf(view.WorldOrigin), Quaternion.Identity, null), null);
         foreach (var group in view.Groups)
         {
-            var groupNode = root.CreateNode(group.Name);
-            var materials = new Materials(model, group);
+            var groupNode = AddNode(new Node(group.Name, Vector3.Zero, Quaternion.Identity, null), root);
+            var groupMaterials = new GroupMaterials(group, materials);
             foreach (var o in group.Objects)
             {
-                var objectNode = groupNode.CreateNode($"{group.Name}: {o.Name}");
-                if (o.Frame != ViewFrame.Identity) objectNode.LocalTransform = new AffineTransform(null, ToGltf(o.Frame.Rotation), ToGltf(o.Frame.Position));
+                var objectNode = AddNode(new Node($"{group.Name}: {o.Name}", ToGltf(o.Frame.Position), ToGltf(o.Frame.Rotation), null), groupNode);
                 var prefix = group.Objects.Count == 1 ? "" : o.Name.Split(' ')[0] + " ";
                 foreach (var shape in o.Shapes)
                 {
                     var name = $"{group.Name}: {prefix}{shape.Name}";
-                    if (!meshes.TryGetValue(shape, out var mesh)) meshes[shape] = mesh = CreateMesh(model, name, shape, materials);
-                    objectNode.CreateNode(name).Mesh = mesh;
+                    if (!meshOf.TryGetValue(shape, out var mesh)) meshOf[shape] = mesh = AddMesh(meshes, data, name, shape, groupMaterials);
+                    AddNode(new Node(name, Vector3.Zero, Quaternion.Identity, mesh), objectNode);
                 }
             }
         }
-        var bytes = model.WriteGLB(new WriteSettings { Validation = SharpGLTF.Validation.ValidationMode.Strict, MergeBuffers = true });
-        return bytes.ToArray();
-    }
 
-    private static Mesh CreateMesh(ModelRoot model, string name, ViewShape shape, Materials materials)
-    {
-        var mesh = model.CreateMesh(name);
-        AddPrimitive(model, mesh, shape.OneSided, materials.OneSided);
-        AddPrimitive(model, mesh, shape.TwoSided, materials.TwoSided);
-        return mesh;
-    }
-
-    private static void AddPrimitive(ModelRoot model, Mesh mesh, TriangleMesh triangles, Lazy<Material> material)
-    {
-        if (triangles.IsEmpty) return;
-        var primitive = mesh.CreatePrimitive();
-        primitive.DrawPrimitiveType = PrimitiveType.TRIANGLES;
-        primitive.SetVertexAccessor("POSITION", Vectors(model, triangles.Positions));
-        primitive.SetVertexAccessor("NORMAL", Vectors(model, triangles.Normals));
-        var indices = new byte[triangles.Indices.Count * 4];
-        for (var i = 0; i < triangles.Indices.Count; i++) BinaryPrimitives.WriteUInt32LittleEndian(indices.AsSpan(i * 4), (uint)triangles.Indices[i]);
-        var view = model.UseBufferView(indices, 0, indices.Length, 0, BufferMode.ELEMENT_ARRAY_BUFFER);
-        var accessor = model.CreateAccessor();
-        accessor.SetIndexData(view, 0, triangles.Indices.Count, IndexEncodingType.UNSIGNED_INT);
-        primitive.SetIndexAccessor(accessor);
-        primitive.Material = material.Value;
-    }
-
-    private static Accessor Vectors(ModelRoot model, IReadOnlyList<Vector3> vectors)
-    {
-        var bytes = new byte[vectors.Count * 12];
-        for (var i = 0; i < vectors.Count; i++)
+        var json = new ArrayBufferWriter<byte>();
+        using (var writer = new Utf8JsonWriter(json))
         {
-            var v = ToGltf(vectors[i]);
-            BinaryPrimitives.WriteSingleLittleEndian(bytes.AsSpan(i * 12), v.X);
-            BinaryPrimitives.WriteSingleLittleEndian(bytes.AsSpan(i * 12 + 4), v.Y);
-            BinaryPrimitives.WriteSingleLittleEndian(bytes.AsSpan(i * 12 + 8), v.Z);
+            writer.WriteStartObject();
+            writer.WriteStartObject("asset");
+            writer.WriteString("generator", Generator);
+            writer.WriteString("version", "2.0");
+            writer.WriteEndObject();
+            writer.WriteNumber("scene", 0);
+            writer.WriteStartArray("scenes");
+            writer.WriteStartObject();
+            writer.WriteString("name", view.Name);
+            writer.WriteStartArray("nodes");
+            writer.WriteNumberValue(root);
+            writer.WriteEndArray();
+            writer.WriteEndObject();
+            writer.WriteEndArray();
+            WriteNodes(writer, nodes);
+            WriteMeshes(writer, meshes);
+            WriteMaterials(writer, materials);
+            data.WriteJson(writer);
+            writer.WriteEndObject();
         }
-        var view = model.UseBufferView(bytes, 0, bytes.Length, 0, BufferMode.ARRAY_BUFFER);
-        var accessor = model.CreateAccessor();
-        accessor.SetVertexData(view, 0, vectors.Count, SharpGLTF.Memory.AttributeFormat.Float3);
-        return accessor;
+        return GlbContainer.Pack(json.WrittenSpan, data.Bytes);
     }
 
-    /// <summary>A group's materials, made when first used: its colour, matte, one-sided or two-sided.</summary>
-    private sealed class Materials(ModelRoot model, ViewGroup group)
+    /// <summary>A shape's mesh: a primitive for its one-sided and one for its two-sided triangles, whichever it has; none when it has no triangles.</summary>
+    private static int? AddMesh(List<Mesh> meshes, GltfBinaryData data, string name, ViewShape shape, GroupMaterials materials)
     {
-        public Lazy<Material> OneSided { get; } = new(() => Create(model, group.Name, group.Colour, doubleSided: false));
-        public Lazy<Material> TwoSided { get; } = new(() => Create(model, group.Name + " (two-sided)", group.Colour, doubleSided: true));
+        var primitives = new List<Primitive>();
+        if (!shape.OneSided.IsEmpty) primitives.Add(AddPrimitive(data, shape.OneSided, materials.OneSided));
+        if (!shape.TwoSided.IsEmpty) primitives.Add(AddPrimitive(data, shape.TwoSided, materials.TwoSided));
+        if (primitives.Count == 0) return null;
+        meshes.Add(new Mesh(name, primitives));
+        return meshes.Count - 1;
+    }
 
-        private static Material Create(ModelRoot model, string name, string colour, bool doubleSided)
+    private static Primitive AddPrimitive(GltfBinaryData data, TriangleMesh triangles, int material) =>
+        new(data.AddVectors(triangles.Positions, bounds: true), data.AddVectors(triangles.Normals, bounds: false), data.AddIndices(triangles.Indices), material);
+
+    private static void WriteNodes(Utf8JsonWriter json, List<Node> nodes)
+    {
+        json.WriteStartArray("nodes");
+        foreach (var node in nodes)
         {
-            var material = model.CreateMaterial(name);
-            material.InitializePBRMetallicRoughness();
-            material.DoubleSided = doubleSided;
-            var baseColour = material.FindChannel("BaseColor")!.Value;
-            baseColour.Color = Rgba(colour);
-            var metallicRoughness = material.FindChannel("MetallicRoughness")!.Value;
-            metallicRoughness.SetFactor("MetallicFactor", 0f);
-            metallicRoughness.SetFactor("RoughnessFactor", 0.9f);
-            return material;
+            json.WriteStartObject();
+            json.WriteString("name", node.Name);
+            if (node.Mesh is { } mesh) json.WriteNumber("mesh", mesh);
+            if (node.Rotation != Quaternion.Identity) GltfJson.WriteQuaternion(json, "rotation", node.Rotation);
+            if (node.Translation != Vector3.Zero) GltfJson.WriteVector(json, "translation", node.Translation);
+            if (node.Children.Count > 0)
+            {
+                json.WriteStartArray("children");
+                foreach (var child in node.Children) json.WriteNumberValue(child);
+                json.WriteEndArray();
+            }
+            json.WriteEndObject();
+        }
+        json.WriteEndArray();
+    }
+
+    private static void WriteMeshes(Utf8JsonWriter json, List<Mesh> meshes)
+    {
+        if (meshes.Count == 0) return;
+        json.WriteStartArray("meshes");
+        foreach (var mesh in meshes)
+        {
+            json.WriteStartObject();
+            json.WriteString("name", mesh.Name);
+            json.WriteStartArray("primitives");
+            foreach (var primitive in mesh.Primitives)
+            {
+                json.WriteStartObject();
+                json.WriteStartObject("attributes");
+                json.WriteNumber("POSITION", primitive.Position);
+                json.WriteNumber("NORMAL", primitive.Normal);
+                json.WriteEndObject();
+                json.WriteNumber("indices", primitive.Indices);
+                json.WriteNumber("material", primitive.Material);
+                json.WriteNumber("mode", 4); // TRIANGLES
+                json.WriteEndObject();
+            }
+            json.WriteEndArray();
+            json.WriteEndObject();
+        }
+        json.WriteEndArray();
+    }
+
+    private static void WriteMaterials(Utf8JsonWriter json, List<Material> materials)
+    {
+        if (materials.Count == 0) return;
+        json.WriteStartArray("materials");
+        foreach (var material in materials)
+        {
+            json.WriteStartObject();
+            json.WriteString("name", material.Name);
+            json.WriteStartObject("pbrMetallicRoughness");
+            json.WriteStartArray("baseColorFactor");
+            GltfJson.WriteFloat(json, material.BaseColour.X);
+            GltfJson.WriteFloat(json, material.BaseColour.Y);
+            GltfJson.WriteFloat(json, material.BaseColour.Z);
+            GltfJson.WriteFloat(json, material.BaseColour.W);
+            json.WriteEndArray();
+            GltfJson.WriteFloat(json, "metallicFactor", 0f);
+            GltfJson.WriteFloat(json, "roughnessFactor", 0.9f);
+            json.WriteEndObject();
+            if (material.DoubleSided) json.WriteBoolean("doubleSided", true);
+            json.WriteEndObject();
+        }
+        json.WriteEndArray();
+    }
+
+    /// <summary>A group's materials, added when first used: its colour, matte, one-sided or two-sided.</summary>
+    private sealed class GroupMaterials(ViewGroup group, List<Material> materials)
+    {
+        private int? _oneSided;
+        private int? _twoSided;
+
+        public int OneSided => _oneSided ??= Add(new Material(group.Name, Rgba(group.Colour), DoubleSided: false));
+        public int TwoSided => _twoSided ??= Add(new Material(group.Name + " (two-sided)", Rgba(group.Colour), DoubleSided: true));
+
+        private int Add(Material material)
+        {
+            materials.Add(material);
+            return materials.Count - 1;
         }
 
         /// <summary>"#rrggbb" as linear RGBA, as glTF's baseColorFactor is linear.</summary>
