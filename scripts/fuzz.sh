@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzz campaign: damaged copies of the built-in sample dats through `dump` and `batch`.
+# Fuzz campaign: damaged copies of the built-in sample dats through `dump`, `batch`, `chart` and `verify`
+# (every case runs all four here; CI's campaign runs chart and verify on every 8th case).
 # Usage: scripts/fuzz.sh [SEED] [CASES] [TIME_LIMIT_SECONDS]      (defaults: 1 50000 10)
 # Prints cases/second, the failures (if any) and the slowest case; saves each kind of failure,
 # minimised, under tests/AcShadow.Tests/Fuzz/Inputs/ so it becomes a regression test.

@@ -46,16 +46,33 @@ public static class AcShadowApp
             var (code, message) = e switch
             {
                 CliException c => (c.ExitCode, c.Message),
+                StandardOutputException o => (ExitCodes.OutputFailed, $"cannot write to standard output: {o.Message} (redirect it to a file or pipe that can take it)"),
+                // Ctrl-C where no command said what it had written (e.g. while the dat was being read).
+                OperationCanceledException => (ExitCodes.Interrupted, "interrupted: nothing was written"),
+                OutOfMemoryException => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
+                FileNotFoundException or FileLoadException when e.Message.Contains("assembly", StringComparison.Ordinal) => (ExitCodes.InternalError, Describe(e)),
                 DatFormatException d => (ExitCodes.DatUnreadable, d.Message.StartsWith("corrupt dat", StringComparison.Ordinal) ? d.Message : $"corrupt dat: {d.Message}"),
                 // Output writes and the --setups file are wrapped where they happen, so a bare I/O error is the dat's.
                 IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),
                 _ => (ExitCodes.InternalError, $"internal error: {e.Message} (run with --verbose for the stack trace, and please report it)"),
             };
-            console.Error.WriteLine($"acshadow: {OneLine(message)}");
-            if (parse.GetValue(verbose)) console.Error.WriteLine(thrown.ToString());
+            try
+            {
+                console.Error.WriteLine($"acshadow: {OneLine(message)}");
+                if (parse.GetValue(verbose)) console.Error.WriteLine(thrown.ToString());
+            }
+            // stderr itself broken (the tests' writers; the real one is guarded): the exit code still tells.
+            catch (IOException)
+            {
+            }
             return code;
         }
     }
+
+    /// <summary>A failure of acshadow's own process rather than its input: which part could not load, and the likely cause.</summary>
+    public static string Describe(Exception e) => e is FileNotFoundException or FileLoadException
+        ? $"cannot load part of acshadow itself ({OneLine(e.Message)}): too few file descriptors (ulimit -n) or an incomplete installation"
+        : $"internal error: {OneLine(e.Message)} (run with --verbose for the stack trace, and please report it)";
 
     /// <summary>Every error is one line, even when an exception's message (or a path in it) holds line breaks.</summary>
     private static string OneLine(string message) =>

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcShadow.Files;
 using AcShadow.Forge.Spec;
 
 namespace AcShadow.Forge;
@@ -97,13 +98,15 @@ public static class ForgeApp
 
     private static void WriteDats(ForgedDats dats, string dir, TextWriter stdout)
     {
+        Directory.CreateDirectory(dir);
         var portalPath = Path.Combine(dir, PortalFileName);
-        AtomicFile.Write(portalPath, dats.Portal);
+        // Flushed: a dat is a few large files, costly to forge again, that a power cut must not leave empty.
+        AtomicFile.Write(portalPath, dats.Portal, Durability.Flushed);
         stdout.WriteLine($"wrote {portalPath} ({dats.Portal.Length} bytes; {dats.GfxObjCount} GfxObjs, {dats.SetupCount} Setups{(dats.EnvironmentCount > 0 ? $", {dats.EnvironmentCount} Environments" : "")})");
         if (dats.Cell is { } cell)
         {
             var cellPath = Path.Combine(dir, CellFileName);
-            AtomicFile.Write(cellPath, cell);
+            AtomicFile.Write(cellPath, cell, Durability.Flushed);
             stdout.WriteLine($"wrote {cellPath} ({cell.Length} bytes; {dats.LandblockCount} LandBlockInfos{(dats.EnvCellCount > 0 ? $", {dats.EnvCellCount} EnvCells" : "")})");
         }
     }
@@ -111,7 +114,9 @@ public static class ForgeApp
     private static void WriteSpec(ForgeSpec spec, string path, TextWriter stdout)
     {
         var json = SpecJson.Serialize(spec);
-        AtomicFile.Write(path, System.Text.Encoding.UTF8.GetBytes(json));
+        var full = Path.GetFullPath(path);
+        Directory.CreateDirectory(Path.GetDirectoryName(full)!);
+        AtomicFile.Write(full, System.Text.Encoding.UTF8.GetBytes(json), Durability.Flushed);
         stdout.WriteLine($"wrote {path} ({json.Length} chars; spec with {spec.GfxObjs.Count} GfxObjs, {spec.Setups.Count} Setups, {spec.Landblocks.Count} landblocks)");
     }
 }

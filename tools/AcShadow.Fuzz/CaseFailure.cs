@@ -7,4 +7,8 @@ namespace AcShadow.Fuzz;
 public sealed record CaseFailure(string Signature, string Detail);
 
 /// <summary>One case's result: a failure or null, how long it took, and each command's exit code.</summary>
-public sealed record CaseOutcome(CaseFailure? Failure, TimeSpan Elapsed, IReadOnlyList<int> ExitCodes);
+public sealed record CaseOutcome(CaseFailure? Failure, TimeSpan Elapsed, IReadOnlyList<int> ExitCodes)
+{
+    /// <summary>How long each command that ran took (a command run by this case once at most).</summary>
+    public IReadOnlyDictionary<string, TimeSpan> CommandTimes { get; init; } = new Dictionary<string, TimeSpan>();
+}

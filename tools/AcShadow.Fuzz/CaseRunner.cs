@@ -6,19 +6,29 @@ namespace AcShadow.Fuzz;
 
 /// <summary>
 /// Runs one case: writes the damaged dats to a scratch folder and runs `dump` and `batch` on them through
-/// the real CLI in-process (<see cref="AcShadowApp.Run"/>, output captured), on a thread a watchdog waits on.
+/// the real CLI in-process (<see cref="AcShadowApp.Run"/>, output captured), on a thread a watchdog waits
+/// on; a deep case also runs `chart` (the dumped Setup on a coarse grid) and `verify`, which reads the
+/// batch's fixtures after one byte of one of them is damaged too, so it meets mutated fixtures as well as
+/// a mutated dat.
 /// A case fails on an undocumented exit code or an internal error (exit 1), on a corrupt-object message
 /// without "corrupt dat" and the id, on a run past the time limit, on allocating more than the memory limit,
 /// or on output that is not whole.
 /// </summary>
 public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLimitBytes)
 {
-    /// <summary>0 ok, 3 dat unreadable, 4 not in dat: what a damaged dat may answer (README "Exit codes").</summary>
+    /// <summary>0 ok, 3 dat unreadable, 4 not in dat: what a damaged dat may answer (docs/errors.md).</summary>
     private static readonly int[] Documented = [0, 3, 4];
+
+    /// <summary>verify may also find a bad fixtures folder (2) or drift (5): its fixtures are damaged on purpose.</summary>
+    private static readonly int[] DocumentedForVerify = [0, 2, 3, 4, 5];
 
     private const int MainThreadStack = 8 << 20; // a process's main thread: recursion limits match the CLI's
 
-    public CaseOutcome Run(FuzzInput input, string name)
+    /// <summary>Grid spacing of a deep case's chart (metres): coarse, since what a case fuzzes is chart reading
+    /// the damaged Setup and its parts, not the density of its grid.</summary>
+    public const string ChartSpacing = "4";
+
+    public CaseOutcome Run(FuzzInput input, string name, bool deep = true)
     {
         var folder = Path.Combine(scratch, name);
         Directory.CreateDirectory(folder);
@@ -26,13 +36,18 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
         var cell = Path.Combine(folder, "client_cell_1.dat");
         File.WriteAllBytes(portal, input.Portal);
         File.WriteAllBytes(cell, input.Cell);
-        string[][] commands =
+        var batchFolder = Path.Combine(folder, "batch");
+        string[][] all =
         [
             ["dump", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "dump"),
                 "--policy", input.Policy, "--format", input.Format, "--verbose"],
             ["batch", "--all", "--landblock", $"0x{input.Landblock:X4}", "--dat", portal, "--cell-dat", cell,
-                "--out", Path.Combine(folder, "batch"), "--jobs", "1", "--quiet", "--policy", input.Policy, "--format", input.Format, "--verbose"],
+                "--out", batchFolder, "--jobs", "1", "--quiet", "--policy", input.Policy, "--format", input.Format, "--verbose"],
+            ["chart", "--setup", $"0x{input.DumpSetup:X8}", "--dat", portal, "--out", Path.Combine(folder, "chart"), "--spacing", ChartSpacing, "--quiet", "--verbose"],
+            ["verify", "--fixtures", batchFolder, "--dat", portal, "--cell-dat", cell, "--jobs", "1", "--verbose"],
         ];
+        var commands = deep ? all : all[..2];
+        var times = new Dictionary<string, TimeSpan>(StringComparer.Ordinal);
 
         var clock = Stopwatch.StartNew();
         var exits = new List<int>();
@@ -43,29 +58,37 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             // Counted on the case's own thread (batch runs --jobs 1, so decoding happens here), so other
             // work in the process, such as tests running beside the campaign, does not count.
             var before = GC.GetAllocatedBytesForCurrentThread();
-            failure = RunCommands(commands, exits);
+            failure = RunCommands(commands, exits, times, () =>
+            {
+                // The batch's output is judged whole before one of its files is damaged for verify.
+                if (OutputCheck.Problem(batchFolder) is { } partial) return new CaseFailure("partial output", partial);
+                DamageOneFixture(batchFolder, input.DumpSetup);
+                return null;
+            });
             allocated = GC.GetAllocatedBytesForCurrentThread() - before;
         }, MainThreadStack) { IsBackground = true, Name = name };
         worker.Start();
         var finished = worker.Join(timeLimit);
         clock.Stop();
         if (!finished)
-            return new CaseOutcome(new CaseFailure($"{commands[Math.Min(exits.Count, commands.Length - 1)][0]}: hang", $"still running after {timeLimit.TotalSeconds:0.###} s"), clock.Elapsed, exits);
+            return new CaseOutcome(new CaseFailure($"{commands[Math.Min(exits.Count, commands.Length - 1)][0]}: hang", $"still running after {timeLimit.TotalSeconds:0.###} s"), clock.Elapsed, exits.ToArray());
         if (failure is null && allocated > memoryLimitBytes)
             failure = new CaseFailure("memory", $"allocated {allocated >> 20} MiB (limit {memoryLimitBytes >> 20} MiB)");
-        if (failure is null && (OutputCheck.Problem(Path.Combine(folder, "dump")) ?? OutputCheck.Problem(Path.Combine(folder, "batch"))) is { } problem)
+        if (failure is null && OutputCheck.Problem(Path.Combine(folder, "dump")) is { } problem)
             failure = new CaseFailure("partial output", problem);
         TryDelete(folder);
-        return new CaseOutcome(failure, clock.Elapsed, exits);
+        return new CaseOutcome(failure, clock.Elapsed, exits) { CommandTimes = times };
     }
 
-    private static CaseFailure? RunCommands(string[][] commands, List<int> exits)
+    private static CaseFailure? RunCommands(string[][] commands, List<int> exits, Dictionary<string, TimeSpan> times, Func<CaseFailure?> beforeVerify)
     {
         foreach (var args in commands)
         {
+            if (args[0] == "verify" && beforeVerify() is { } partial) return partial;
             var output = new StringWriter();
             var error = new StringWriter();
             int code;
+            var started = Stopwatch.GetTimestamp();
             try
             {
                 code = AcShadowApp.Run(args, new CliConsole(output, error, false, _ => null));
@@ -74,6 +97,10 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             {
                 // AcShadowApp catches everything; reaching here means it let an exception escape.
                 return new CaseFailure($"{args[0]}: escaped {e.GetType().Name}", e.ToString());
+            }
+            finally
+            {
+                lock (times) times[args[0]] = Stopwatch.GetElapsedTime(started);
             }
             exits.Add(code);
             if (Judge(args[0], code, error.ToString()) is { } failure) return failure;
@@ -93,7 +120,7 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             var exception = type.Split(':')[0];
             return new CaseFailure($"{command}: internal error: {exception}", stderr);
         }
-        if (!Documented.Contains(code))
+        if (!(command == "verify" ? DocumentedForVerify : Documented).Contains(code))
             return new CaseFailure($"{command}: exit {code}", stderr);
         // A damaged object, wherever it is met, is named: "corrupt dat" and the id being read.
         // (Refusing the whole file at open, for its header or directory, names the option and the file instead.)
@@ -106,6 +133,19 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             && !NamesCorruptObject(l)) is { } unnamed)
             return new CaseFailure($"{command}: unreadable object without \"corrupt dat\" and an id", unnamed);
         return null;
+    }
+
+    /// <summary>Flips one byte of one file the batch wrote (chosen by the case's seed), or none when it wrote nothing.</summary>
+    private static void DamageOneFixture(string batchFolder, uint seed)
+    {
+        if (!Directory.Exists(batchFolder)) return;
+        var files = Directory.GetFiles(batchFolder, "*.json", SearchOption.AllDirectories).Order(StringComparer.Ordinal).ToArray();
+        if (files.Length == 0) return;
+        var file = files[(int)(seed % (uint)files.Length)];
+        var bytes = File.ReadAllBytes(file);
+        if (bytes.Length == 0) return;
+        bytes[(int)(seed / 7 % (uint)bytes.Length)] ^= (byte)(1 + seed % 255);
+        File.WriteAllBytes(file, bytes);
     }
 
     private static bool NamesCorruptObject(string line) =>

@@ -3,8 +3,9 @@ using System.Globalization;
 namespace AcShadow.Fuzz;
 
 /// <summary>
-/// `acshadow-fuzz [--seed N] [--cases N] [--start N] [--time-limit SECONDS] [--memory-limit MIB] [--save DIR] [--trace FILE]`:
-/// runs a campaign on the built-in sample and prints cases/second, failures and the slowest case. With
+/// `acshadow-fuzz [--seed N] [--cases N] [--start N] [--deep-every N] [--time-limit SECONDS] [--memory-limit MIB] [--save DIR] [--trace FILE]`:
+/// runs a campaign on the built-in sample and prints cases/second, time per command, failures and the
+/// slowest case. Every case runs dump and batch; every Nth (--deep-every, default 1: all) also chart and verify. With
 /// --save, each kind of failure is minimised and saved there as a reproducer; with --trace, the index of the
 /// case about to run is written to FILE (what a crash of the whole process leaves). Exit 0 when nothing failed.
 /// </summary>
@@ -22,13 +23,14 @@ public static class Program
             {
                 case "--seed": options = options with { Seed = long.Parse(Need(value, args[i]), CultureInfo.InvariantCulture) }; i++; break;
                 case "--cases": options = options with { Cases = int.Parse(Need(value, args[i]), CultureInfo.InvariantCulture) }; i++; break;
+                case "--deep-every": options = options with { DeepEvery = int.Parse(Need(value, args[i]), CultureInfo.InvariantCulture) }; i++; break;
                 case "--start": options = options with { Start = int.Parse(Need(value, args[i]), CultureInfo.InvariantCulture) }; i++; break;
                 case "--time-limit": options = options with { TimeLimitSeconds = double.Parse(Need(value, args[i]), CultureInfo.InvariantCulture) }; i++; break;
                 case "--memory-limit": options = options with { MemoryLimitBytes = long.Parse(Need(value, args[i]), CultureInfo.InvariantCulture) << 20 }; i++; break;
                 case "--save": save = Need(value, args[i]); i++; break;
                 case "--trace": trace = Need(value, args[i]); i++; break;
                 default:
-                    Console.Error.WriteLine($"acshadow-fuzz: unknown argument '{args[i]}' (use --seed, --cases, --start, --time-limit, --memory-limit, --save, --trace)");
+                    Console.Error.WriteLine($"acshadow-fuzz: unknown argument '{args[i]}' (use --seed, --cases, --start, --deep-every, --time-limit, --memory-limit, --save, --trace)");
                     return 2;
             }
         }
@@ -37,7 +39,7 @@ public static class Program
         try
         {
             var bases = FuzzBase.All();
-            Console.WriteLine($"fuzz: seed {options.Seed}, cases {options.Start}..{options.Start + options.Cases - 1}, " +
+            Console.WriteLine($"fuzz: seed {options.Seed}, cases {options.Start}..{options.Start + options.Cases - 1} (chart and verify on every {Math.Max(1, options.DeepEvery)}), " +
                 $"time limit {options.TimeLimitSeconds:0.###} s, memory limit {options.MemoryLimitBytes >> 20} MiB per case");
             var step = Math.Max(1, options.Cases / 20);
             var done = 0;
@@ -69,8 +71,9 @@ public static class Program
 
     private static void Print(CampaignResult r)
     {
-        Console.WriteLine($"cases: {r.Cases} in {r.Elapsed.TotalSeconds:0.0} s = {r.CasesPerSecond:0.0} cases/s");
-        Console.WriteLine($"exit codes (dump + batch per case): {string.Join(", ", r.ExitCodeCounts.Select(kv => $"{kv.Key}: {kv.Value}"))}");
+        Console.WriteLine($"cases: {r.Cases} in {r.Elapsed.TotalSeconds:0.0} s = {r.CasesPerSecond:0.0} cases/s ({r.DeepCases} also ran chart and verify)");
+        Console.WriteLine($"time per command: {string.Join(", ", r.CommandTimes.Select(kv => $"{kv.Key} {kv.Value.TotalSeconds:0.0} s"))}");
+        Console.WriteLine($"exit codes (dump, batch, chart, verify per case): {string.Join(", ", r.ExitCodeCounts.Select(kv => $"{kv.Key}: {kv.Value}"))}");
         Console.WriteLine($"slowest: case {r.SlowestCase} in {r.SlowestTime.TotalMilliseconds:0} ms: {r.SlowestDescription}");
         Console.WriteLine($"failures: {r.FailedCases} case(s), {r.FailureCounts.Count} kind(s)");
         foreach (var found in r.Failures.DistinctBy(f => f.Failure.Signature))

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Globalization;
 using System.Text;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Audit;
 using AcShadow.Core.Chart;
@@ -46,11 +47,12 @@ public static class AuditCommand
     private static int Run(CliConsole console, Core.Batch.BatchSelection selection, string? datPath, string? cellPath,
         AuditQuery query, AuditFormat format, string? output, int jobs, bool chart)
     {
+        if (output is not null) OutputPaths.RequireNamed(output);
         if (output is not null && Directory.Exists(output))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {output} is a folder: pass a file name, e.g. audit.csv");
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet: !chart, "setups charted");
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet: !chart, "setups charted", "audit");
         AuditReport report;
         try
         {
@@ -67,8 +69,8 @@ public static class AuditCommand
             if (format == AuditFormat.Csv) console.Error.Write(AuditWriter.SummaryText(report));
             return ExitCodes.Ok;
         }
-        var full = Path.GetFullPath(output);
-        OutputFolder.WriteAtomically(Path.GetDirectoryName(full)!, Path.GetFileName(full), new UTF8Encoding(false).GetBytes(text));
+        dat.RequireUnchanged();
+        ExplicitOutputFile.Write(output, new UTF8Encoding(false).GetBytes(text));
         console.Out.Write(AuditWriter.SummaryText(report));
         console.Out.WriteLine($"wrote {output} ({format.ToString().ToLowerInvariant()}, {report.Rows.Count} row(s))");
         return ExitCodes.Ok;

@@ -3,6 +3,7 @@ using System.Diagnostics;
 using System.Globalization;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
@@ -10,6 +11,7 @@ using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Files;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
@@ -62,16 +64,19 @@ public static class BatchCommand
         ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
+        OutputPaths.RequireNamed(outDir);
         if (File.Exists(outDir))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
-        OutputFolder.Prepare(outDir);
+        WriteProbe.Prepare(outDir);
+        using var folder = OutputFolderLock.Acquire(outDir);
+        AbandonedTemporaries.Remove(outDir);
         var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
         {
             Formats = formats,
         };
-        RefuseForeignFiles(outDir, plan);
+        RefuseForeignFiles(outDir, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         // A second view over the same archive; `dat` owns and disposes the archive.
         var source = new DatDatabase(dat.Portal.Archive, cacheCapacity: 256);
@@ -80,34 +85,50 @@ public static class BatchCommand
             ? new BatchReuse(ReadState(outDir), IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HasSize(outDir, file))
             : null;
 
-        int filesWritten = 0, unchanged = 0;
+        int filesWritten = 0, unchanged = 0, indexRemoved = 0;
         long written = 0;
         // A file that already holds exactly its bytes is left alone: a re-run keeps timestamps and, on ext4,
         // avoids replacing a file, whose freed inode every later create in the next minute steps over.
         void Write(string path, ReadOnlyMemory<byte> content)
         {
-            if (OutputFolder.IsUnchanged(outDir, path, content.Span)) Interlocked.Increment(ref unchanged);
+            if (UnchangedCheck.IsUnchanged(outDir, path, content.Span)) Interlocked.Increment(ref unchanged);
             else
             {
-                Interlocked.Add(ref written, OutputFolder.WriteAtomically(outDir, path, content));
+                // An index describes a finished run: the old one goes before the first file changes, so a run
+                // stopped part-way leaves a folder verify calls incomplete, not an index its files contradict.
+                if (Interlocked.Exchange(ref indexRemoved, 1) == 0) RemoveIndex(outDir);
+                Interlocked.Add(ref written, AtomicOutput.Write(outDir, path, content));
                 Interlocked.Increment(ref filesWritten);
             }
         }
 
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet, "setups");
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet, "setups", "batch");
         BatchSummary result;
         try
         {
-            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content), reuse, progress.Report);
+            result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content), reuse, p =>
+            {
+                progress.Report(p);
+                dat.RequireUnchanged();
+            }, console.Interrupted);
+            dat.RequireUnchanged();
         }
-        catch (AggregateException e) when (e.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first)
+        catch (OperationCanceledException) when (console.Interrupted.IsCancellationRequested)
         {
-            throw first;
+            throw Interrupted(outDir, filesWritten, written);
+        }
+        // A dat cut or rewritten under the run shows up as any read error: that is the error to report.
+        catch (Exception e) when (e is AggregateException or IOException or DatFormatException)
+        {
+            dat.RequireUnchanged();
+            if (e is AggregateException a && a.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first) throw first;
+            throw;
         }
         finally
         {
             progress.Finish();
         }
+        folder.RequireStillInPlace();
         // The state for the next --incremental run, then index.json, last: an index on disk only ever
         // describes files already written.
         if (incremental) Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
@@ -116,9 +137,10 @@ public static class BatchCommand
         {
             // Streamed to its file: on a retail dat index.json is megabytes, and a buffer for it would be the
             // run's largest allocation, at its very end.
-            written += OutputFolder.WriteAtomically(outDir, BatchResult.IndexPath, result.WriteIndex);
+            written += AtomicOutput.Write(outDir, BatchResult.IndexPath, result.WriteIndex);
             filesWritten++;
         }
+        folder.RequireStillInPlace();
         // Files of Setups reused unseen are unchanged too.
         if (incremental) unchanged = result.Files.Count + 2 - filesWritten;
 
@@ -130,7 +152,7 @@ public static class BatchCommand
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
         foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
-            o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
+            o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}{(group.Count() > IdSummary.Shown ? " (all in index.json's skipped)" : "")}");
         if (result.Diagnostics.Diagnostics > 0)
             o.WriteLine($"  diagnostics: {result.Diagnostics.Diagnostics} in {result.Diagnostics.Setups} setup(s) (listed in each file's \"diagnostics\")");
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -141,17 +163,23 @@ public static class BatchCommand
     /// <summary>
     /// Files stream to disk as they are made, so the check that no file acshadow does not own gets replaced
     /// runs first, over what is already there: every file in the places a batch writes (the planned Setups'
-    /// shadow files, gfxobjs/, scene.json, index.json, incremental.json) that the folder's index.json does
+    /// shadow files, gfxobjs/, scene.json, cells/, index.json, incremental.json) that the folder's index.json does
     /// not list must carry the signature of the acshadow format its name stands for.
     /// </summary>
-    private static void RefuseForeignFiles(string outDir, BatchPlan plan)
+    private static void RefuseForeignFiles(string outDir, BatchPlan plan, OutputFormats formats)
     {
-        var listed = OutputFolder.ListedByIndex(outDir);
+        var listed = IndexListing.Read(outDir);
         var candidates = new List<(string Path, byte[] Head)>();
+        // A file the index lists is ours even when damaged; anything but a regular file never is.
+        bool NeedsCheck(string relative) => FileKinds.Of(OutputPaths.Target(outDir, relative)) switch
+        {
+            FileKind.Missing => false,
+            FileKind.Regular => !listed.Contains(relative),
+            _ => true,
+        };
         void Consider(string relative, string format)
         {
-            if (!listed.Contains(relative) && (File.Exists(Path.Combine(outDir, relative)) || Directory.Exists(Path.Combine(outDir, relative))))
-                candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes($"{{\n  \"format\": \"{format}\",\n")));
+            if (NeedsCheck(relative)) candidates.Add((relative, ForeignFileGuard.JsonHead(format).ToArray()));
         }
         foreach (var setup in plan.Setups) Consider(ShadowFileFormat.PathFor(setup.Id), ShadowFileFormat.Format);
         var gfxobjs = Path.Combine(outDir, "gfxobjs");
@@ -160,15 +188,39 @@ public static class BatchCommand
             {
                 var relative = "gfxobjs/" + Path.GetFileName(file);
                 if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, BspFileFormat.Format);
-                else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && !listed.Contains(relative))
+                else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && NeedsCheck(relative))
                     candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
             }
         if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
-        foreach (var cell in plan.Scene?.Cells ?? []) Consider(Fixtures.Cells.CellFileFormat.PathFor(cell.Id), Fixtures.Cells.CellFileFormat.Format);
+        foreach (var cell in plan.Scene?.Cells ?? [])
+        {
+            Consider(Fixtures.Cells.CellFileFormat.PathFor(cell.Id), Fixtures.Cells.CellFileFormat.Format);
+            var acdream = Fixtures.Cells.CellFileFormat.AcdreamPathFor(cell.Id);
+            if (formats.HasFlag(OutputFormats.Acdream) && NeedsCheck(acdream))
+                candidates.Add((acdream, System.Text.Encoding.UTF8.GetBytes("{\n  \"CellId\": 0,\n")));
+        }
         Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
-        OutputFolder.RefuseForeignFiles(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
+        ForeignFileGuard.Refuse(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
     }
+
+    private static void RemoveIndex(string outDir)
+    {
+        var index = Path.Combine(outDir, BatchResult.IndexPath);
+        try
+        {
+            if (FileKinds.Of(index) == FileKind.Regular) File.Delete(index);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {index} before replacing its files: {e.Message}");
+        }
+    }
+
+    /// <summary>Ctrl-C: what is on disk, and that the folder is not a finished run (it has no index.json).</summary>
+    private static CliException Interrupted(string outDir, int files, long bytes) =>
+        new(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
+            $"interrupted: {files} file(s) ({bytes} bytes) were written to {outDir}, each whole; the folder is incomplete (no index.json, so verify calls it an incomplete run): run the same batch again to complete it"));
 
     /// <summary>Whether a file the previous run wrote is still there with the size it recorded.</summary>
     private static bool HasSize(string outDir, FileEntry file)

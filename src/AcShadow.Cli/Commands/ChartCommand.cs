@@ -1,11 +1,14 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using System.Text;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Chart;
+using AcShadow.Core.Chart.Models;
+using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
@@ -30,9 +33,10 @@ public static class ChartCommand
         var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})", HelpName = "S" };
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
+        var jobs = new Option<string?>("--jobs") { Description = "objects charted side by side (default 1: times per query are then measured undisturbed)", HelpName = "N" };
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
         {
-            setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, outDir, radius, spacing, scale, quiet,
+            setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, outDir, radius, spacing, scale, quiet, jobs,
         };
         command.SetAction(parse =>
         {
@@ -48,15 +52,18 @@ public static class ChartCommand
                 Spacing = Metres(parse.GetValue(spacing), "--spacing", ChartOptions.DefaultSpacing),
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
+            var jobCount = parse.GetValue(jobs) is { } j ? SelectionOptions.ParseJobs(j) : 1;
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
-                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet));
+                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet), jobCount);
         });
         return command;
     }
 
-    private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, ChartOptions options, float scale, bool quiet)
+    private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir,
+        ChartOptions options, float scale, bool quiet, int jobs)
     {
         var clock = Stopwatch.StartNew();
+        OutputPaths.RequireNamed(outDir);
         if (File.Exists(outDir))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
@@ -68,65 +75,113 @@ public static class ChartCommand
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
         var planned = selection.IsEmpty ? null : SelectionOptions.Plan(selection, dat);
-        OutputFolder.Prepare(outDir);
         var order = ids.Concat(planned?.Setups.Select(s => s.Id) ?? []).Distinct().ToArray();
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
+        var objectIds = order.Concat(bareGfxObjs).ToArray();
+
+        WriteProbe.Prepare(outDir);
+        using var folder = OutputFolderLock.Acquire(outDir);
+        AbandonedTemporaries.Remove(outDir);
+        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
 
         var subjects = new ChartSubjects(dat.Portal);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
-        // for by --setup has been read above, so it is decodable.
+        // for by --setup has been read above, so it is decodable. The first few are warned about as they
+        // come; the summary counts them all.
         var unreadable = new List<uint>();
-        ChartSubject? Decodable(uint id, Func<ChartSubject?> subject)
+        ChartSubject? SubjectAt(int i)
         {
+            var id = objectIds[i];
             try
             {
-                return subject();
+                return i < order.Length ? subjects.For(id, scale) : subjects.ForBareGfxObj(id, scale);
             }
             catch (DatFormatException e)
             {
-                console.Error.WriteLine($"warning: {JsonIds.Format(id)}: unreadable, skipped: {e.Message}");
-                unreadable.Add(id);
+                lock (unreadable)
+                {
+                    unreadable.Add(id);
+                    if (unreadable.Count <= IdSummary.Shown) console.Error.WriteLine($"warning: {JsonIds.Format(id)}: unreadable, skipped: {e.Message}");
+                    else if (unreadable.Count == IdSummary.Shown + 1) console.Error.WriteLine("warning: more objects are unreadable; the summary counts them");
+                }
                 return null;
             }
         }
-        var chosen = order.Select(id => Decodable(id, () => subjects.For(id, scale)))
-            .Concat(bareGfxObjs.Select(id => Decodable(id, () => subjects.ForBareGfxObj(id, scale))))
-            .OfType<ChartSubject>()
-            .ToArray();
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || chosen.Length < 2, "objects charted");
-        ChartReport report;
+
+        var models = ShapeModels.All.Select(m => m.Name).ToArray();
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || objectIds.Length < 2, "objects charted", "chart");
+        int charted = 0, mapsWritten = 0;
+        long bytes = 0, probes = 0;
+        var cheapest = new List<string>();
+        ChartTally tally = null!;
         try
         {
-            report = ChartRunner.Run(chosen, options, progress: (done, total) => progress.Report(new BatchProgress(done, total)));
+            // chart.csv and failures.csv grow object by object in their temporary files and are renamed into
+            // place at the end; each failure map is written whole as soon as its object is done, so memory
+            // stays flat however many objects there are.
+            long failuresBytes = 0;
+            var chartBytes = AtomicOutput.Write(outDir, "chart.csv", chartCsv =>
+                failuresBytes = AtomicOutput.Write(outDir, "failures.csv", failuresCsv =>
+                {
+                    var chartRows = new StreamWriter(chartCsv, new UTF8Encoding(false), 1 << 16);
+                    var failureRows = new StreamWriter(failuresCsv, new UTF8Encoding(false), 1 << 16);
+                    chartRows.Write(ChartCsv.Header + "\n");
+                    failureRows.Write(FailuresCsv.Header + "\n");
+                    tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
+                    {
+                        DiagnosticPrinter.Print(console.Error, JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics);
+                        chartRows.Write(ChartCsv.Rows(chart));
+                        failureRows.Write(FailuresCsv.Rows(chart));
+                        var map = ChartFiles.FailureMap(options, models, chart);
+                        bytes += AtomicOutput.Write(outDir, map.RelativePath, map.Content);
+                        mapsWritten++;
+                        charted++;
+                        probes += chart.Probes.Count;
+                        if (cheapest.Count < 20) cheapest.Add($"  {JsonIds.Format(chart.SetupId)}: cheapest exact model {(chart.CheapestExact.Length == 0 ? "none" : chart.CheapestExact)}");
+                    }, progress: (done, total) =>
+                    {
+                        progress.Report(new BatchProgress(done, total));
+                        dat.RequireUnchanged();
+                    }, jobs: jobs, cancellation: console.Interrupted);
+                    chartRows.Flush();
+                    failureRows.Flush();
+                }));
+            bytes += chartBytes + failuresBytes;
+            dat.RequireUnchanged();
+        }
+        catch (AggregateException e) when (e.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first)
+        {
+            throw first;
+        }
+        catch (OperationCanceledException) when (console.Interrupted.IsCancellationRequested)
+        {
+            throw new CliException(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
+                $"interrupted: {mapsWritten} failure map(s) of {objectIds.Length} object(s) were written to {outDir}, each whole; chart.csv, summary.csv, failures.csv and speed-accuracy.svg were not, so the folder is incomplete: run the same chart again"));
         }
         finally
         {
             progress.Finish();
         }
-        foreach (var o in report.Objects)
-            DiagnosticPrinter.Print(console.Error, JsonIds.Format(o.SetupId), o.Models[0].Diagnostics);
-
-        long bytes = 0;
-        var files = ChartFiles.Render(report);
-        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
-        foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
+        var summaries = tally.Summaries();
+        bytes += AtomicOutput.Write(outDir, "summary.csv", new UTF8Encoding(false).GetBytes(SummaryCsv.Write(summaries)));
+        bytes += AtomicOutput.Write(outDir, "speed-accuracy.svg", new UTF8Encoding(false).GetBytes(SpeedAccuracySvg.Write(options, models[0], tally.Objects, summaries)));
+        folder.RequireStillInPlace();
 
         var chartedSetups = order.Length - unreadable.Count(order.Contains);
         var w = console.Out;
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"chart: {report.Objects.Count} object(s) ({chartedSetups} Setup(s), {report.Objects.Count - chartedSetups} bare GfxObj(s)) from {dat.Description}, {report.Objects.Sum(o => o.Probes.Count)} probes (radius {options.ProbeRadius} m, spacing {options.Spacing} m), reference {report.Reference}"));
-        foreach (var s in ModelSummary.All(report))
+            $"chart: {charted} object(s) ({chartedSetups} Setup(s), {charted - chartedSetups} bare GfxObj(s)) from {dat.Description}, {probes} probes (radius {options.ProbeRadius} m, spacing {options.Spacing} m), reference {models[0]}"));
+        foreach (var s in summaries)
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {s.FalsePass,7} false pass  {s.FalseBlock,7} false block  {s.Timing.MedianNs,8:0.0} ns/query median"));
-        foreach (var o in report.Objects.Take(20))
-            w.WriteLine($"  {JsonIds.Format(o.SetupId)}: cheapest exact model {(o.CheapestExact.Length == 0 ? "none" : o.CheapestExact)}");
-        if (report.Objects.Count > 20) w.WriteLine($"  ... cheapest exact model of every setup in {Path.Combine(outDir, "chart.csv")}");
+        foreach (var line in cheapest) w.WriteLine(line);
+        if (charted > 20) w.WriteLine($"  ... cheapest exact model of every setup in {Path.Combine(outDir, "chart.csv")}");
         foreach (var group in planned?.Skipped.GroupBy(s => s.Reason) ?? [])
-            w.WriteLine($"  skipped {group.Count()} ({group.Key}): {string.Join(' ', group.Select(s => JsonIds.Format(s.Id)))}");
+            w.WriteLine($"  skipped {group.Count()} ({group.Key}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}");
         if (unreadable.Count > 0)
-            w.WriteLine($"  skipped {unreadable.Count} (unreadable, see the warnings): {string.Join(' ', unreadable.Select(JsonIds.Format))}");
+            w.WriteLine($"  skipped {unreadable.Count} (unreadable, see the warnings): {IdSummary.Of(unreadable.Order().ToArray())}");
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  wrote {files.Count} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
+            $"  wrote {4 + mapsWritten} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
         return ExitCodes.Ok;
     }
 

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Diagnostics;
 using System.Reflection;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Core.Doctor;
 
 namespace AcShadow.Cli.Commands;
@@ -31,6 +32,7 @@ public static class DoctorCommand
 
     private static int Run(CliConsole console, string? datPath, string? cellPath, string? output, int jobs)
     {
+        if (output is not null) OutputPaths.RequireNamed(output);
         if (output is not null && Directory.Exists(output))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {output} is a folder: pass a file name, e.g. doctor.json");
         using var dat = DatLocator.Open(datPath, cellPath, console);
@@ -38,8 +40,7 @@ public static class DoctorCommand
         var report = DoctorRunner.Run(dat.Portal.Archive, dat.Cell?.Archive, options);
         console.Out.Write(DoctorReportWriter.Summary(report, dat.IsSample ? "the built-in synthetic sample" : "your dat"));
         if (output is null) return ExitCodes.Ok;
-        var full = Path.GetFullPath(output);
-        OutputFolder.WriteAtomically(Path.GetDirectoryName(full)!, Path.GetFileName(full), DoctorReportWriter.Json(report));
+        ExplicitOutputFile.Write(output, DoctorReportWriter.Json(report), "doctor.json");
         console.Out.WriteLine($"wrote {output} ({DoctorReport.Format}: ids, counts, hashes and verdicts only)");
         return ExitCodes.Ok;
     }

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
@@ -75,12 +76,14 @@ public static class SceneCommand
         if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
-        OutputFolder.Prepare(outDir);
+        WriteProbe.Prepare(outDir);
+        using var folder = OutputFolderLock.Acquire(outDir);
+        AbandonedTemporaries.Remove(outDir);
 
         var subjects = new ChartSubjects(dat.Portal);
         var placed = PlacedObject.Of(scene);
         var distinct = placed.Select(p => (p.Object.Kind, p.Object.Id)).Distinct().Count();
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || distinct < 2, "objects and cells compiled");
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || distinct < 2, "objects and cells compiled", "scene");
         CompiledSceneReport report;
         try
         {
@@ -96,9 +99,14 @@ public static class SceneCommand
             DiagnosticPrinter.Print(console.Error, JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
-        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
         long bytes = 0;
-        foreach (var file in files) bytes += OutputFolder.WriteAtomically(outDir, file.RelativePath, file.Content);
+        foreach (var file in files)
+        {
+            console.Interrupted.ThrowIfCancellationRequested();
+            bytes += AtomicOutput.Write(outDir, file.RelativePath, file.Content);
+        }
+        folder.RequireStillInPlace();
 
         var t = report.Totals;
         var w = console.Out;

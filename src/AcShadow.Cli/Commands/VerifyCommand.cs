@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Files;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
 using AcShadow.Core.Shapes;
@@ -48,7 +49,8 @@ public static class VerifyCommand
         var options = new ShapeBuildOptions(recorded.Policy, recorded.EntityScale);
         var cellInfo = selection.Landblock is null ? null : dat.Cell?.Info;
         var inputs = recorded with { Dat = dat.Portal.Info, CellDat = cellInfo };
-        var result = BatchRunner.Run(dat.Portal, options, plan, inputs, jobs);
+        var result = BatchRunner.Run(dat.Portal, options, plan, inputs, jobs, cancellation: console.Interrupted);
+        dat.RequireUnchanged();
 
         var expected = result.AllFiles.ToDictionary(f => f.Path, f => f.Content, StringComparer.Ordinal);
         var actual = ReadFolder(folder, index);
@@ -63,19 +65,25 @@ public static class VerifyCommand
         if (!Directory.Exists(folder))
             throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} is not a folder: pass the folder `acshadow batch --out` wrote");
         var path = Path.Combine(folder, BatchResult.IndexPath);
-        if (!File.Exists(path))
+        if (FileKinds.Of(path, followLinks: true) == FileKind.Missing)
+        {
+            // A batch removes the old index before its first write and writes the new one last, so output
+            // without an index is a run that was stopped (Ctrl-C, a kill, a failure) before it finished.
+            if (HasOutput(folder))
+                throw new CliException(ExitCodes.Drift, $"--fixtures: {folder} is an incomplete run: it holds batch output but no {BatchResult.IndexPath} (the batch that wrote it was stopped before the end): run the batch again");
             throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} has no {BatchResult.IndexPath}: pass a folder `acshadow batch --out` wrote");
+        }
+        var bytes = ReadFixture(folder, BatchResult.IndexPath);
+        // An editor that saved index.json with a byte-order mark: said as such, not as "not an index".
+        if (bytes.AsSpan().StartsWith("\uFEFF"u8))
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {path} starts with a UTF-8 byte-order mark (an editor added it; acshadow writes none): remove the mark or run the batch again");
         try
         {
-            return BatchIndexReader.Read(File.ReadAllBytes(path));
+            return BatchIndexReader.Read(bytes);
         }
         catch (FormatException e)
         {
             throw new CliException(ExitCodes.Usage, $"--fixtures: {path} is not a batch index: {e.Message}");
-        }
-        catch (IOException e)
-        {
-            throw new CliException(ExitCodes.Usage, $"--fixtures: cannot read {path}: {e.Message}");
         }
     }
 
@@ -86,7 +94,7 @@ public static class VerifyCommand
         void Add(string relative)
         {
             var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
-            if (!files.ContainsKey(relative) && File.Exists(full)) files[relative] = File.ReadAllBytes(full);
+            if (!files.ContainsKey(relative) && FileKinds.Of(full, followLinks: true) != FileKind.Missing) files[relative] = ReadFixture(folder, relative);
         }
         Add(BatchResult.IndexPath);
         Add(Core.Scenes.SceneFileFormat.Path);
@@ -106,6 +114,31 @@ public static class VerifyCommand
         return files;
     }
 
+    /// <summary>
+    /// A fixture's bytes; one that cannot be read (permissions, a FIFO or device where a file belongs, which
+    /// would block or never end) is a bad fixtures folder, named, not an internal error.
+    /// </summary>
+    private static byte[] ReadFixture(string folder, string relative)
+    {
+        var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
+        var kind = FileKinds.Of(full, followLinks: true);
+        if (kind is not (FileKind.Regular or FileKind.Unknown))
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {full} is {FileKinds.Describe(kind)}, not a regular file: a fixtures folder holds only the files batch wrote");
+        try
+        {
+            return File.ReadAllBytes(full);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: cannot read {full}: {e.Message} (a fixtures folder must be readable)");
+        }
+    }
+
+    /// <summary>Whether the folder holds files a batch writes (its subfolders' JSON), index aside.</summary>
+    private static bool HasOutput(string folder) =>
+        OutputFolders.Any(sub => Directory.Exists(Path.Combine(folder, sub))
+            && Directory.EnumerateFiles(Path.Combine(folder, sub), "*.json", SearchOption.AllDirectories).Any());
+
     private static int Report(CliConsole console, string folder, string source, FixtureComparison c)
     {
         var o = console.Out;
@@ -117,6 +150,11 @@ public static class VerifyCommand
         foreach (var d in c.DatDifferences) o.WriteLine($"dat differs from the one index.json records: {d}");
         foreach (var changed in c.Changed)
         {
+            if (changed.OnlyLineEndings)
+            {
+                o.WriteLine($"changed {changed.Path}: line endings differ (CRLF): the same bytes once CRLF is read as LF (a checkout converted them; keep fixtures exact with `fixtures/** -text` in .gitattributes)");
+                continue;
+            }
             o.WriteLine($"changed {changed.Path}");
             if (changed.Differences is null)
             {
@@ -130,7 +168,7 @@ public static class VerifyCommand
         foreach (var path in c.Missing) o.WriteLine($"missing {path} (regeneration writes it; {folder} lacks it)");
         foreach (var path in c.Extra) o.WriteLine($"extra {path} ({folder} has it; regeneration does not write it)");
         console.Error.WriteLine(
-            $"acshadow: {folder} drifted: {c.Changed.Count} changed, {c.Missing.Count} missing, {c.Extra.Count} extra file(s)" +
+            $"acshadow: {folder} drifted: {c.Changed.Count} changed{(c.Changed.Count(f => f.OnlyLineEndings) is > 0 and var crlf ? (crlf == c.Changed.Count ? " (line endings differ (CRLF) only)" : $" ({crlf} in line endings (CRLF) only)") : "")}, {c.Missing.Count} missing, {c.Extra.Count} extra file(s)" +
             (c.DatDifferences.Count > 0 ? ", a different dat" : "") +
             " — if the change is intended, regenerate the fixtures (scripts/regenerate-fixtures.sh, or batch with index.json's inputs)");
         return ExitCodes.Drift;

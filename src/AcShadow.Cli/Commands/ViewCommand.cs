@@ -3,15 +3,17 @@ using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.View;
+using AcShadow.Files;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
-using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;
 
@@ -50,6 +52,7 @@ public static class ViewCommand
                 throw new CliException(ExitCodes.Usage, "--fixtures reads only the folder's JSON: drop --dat and --cell-dat");
             if (folder is not null && parse.GetValue(scale) is not null)
                 throw new CliException(ExitCodes.Usage, "--fixtures views the files at the scale they were written with: drop --scale");
+            OutputPaths.RequireNamed(parse.GetValue(outDir)!);
             var failures = parse.GetValue(chart) is { } chartDir ? ReadFailures(chartDir) : [];
             var scenes = folder is not null
                 ? FromFixtures(console, folder, ids, landblock, failures)
@@ -185,6 +188,7 @@ public static class ViewCommand
 
     private static T ReadFixture<T>(string path, Func<string, T> read)
     {
+        RequireRegular(path, "--fixtures");
         try
         {
             return read(File.ReadAllText(path));
@@ -199,11 +203,20 @@ public static class ViewCommand
         }
     }
 
+    /// <summary>Asked before opening: opening a FIFO waits for a writer, and a device never ends.</summary>
+    private static void RequireRegular(string path, string option)
+    {
+        var kind = FileKinds.Of(path, followLinks: true);
+        if (kind is not (FileKind.Regular or FileKind.Unknown))
+            throw new CliException(ExitCodes.Usage, $"{option}: {path} is {FileKinds.Describe(kind)}, not a regular file: pass the folder acshadow wrote");
+    }
+
     private static IReadOnlyList<ChartFailure> ReadFailures(string folder)
     {
         var path = Path.Combine(folder, "failures.csv");
         if (!File.Exists(path))
             throw new CliException(ExitCodes.Usage, $"--chart: {path} does not exist: pass the folder `acshadow chart --out` wrote");
+        RequireRegular(path, "--chart");
         try
         {
             return ChartFailure.ParseCsv(File.ReadAllText(path));
@@ -225,17 +238,23 @@ public static class ViewCommand
             (Path: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
             (Path: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
         }).ToArray();
-        OutputFolder.Prepare(outDir);
-        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.Path, f.Content)));
-        foreach (var (path, content) in files)
+        WriteProbe.Prepare(outDir);
+        using (var folder = OutputFolderLock.Acquire(outDir))
         {
-            if (OutputFolder.IsUnchanged(outDir, path, content.Span))
-                console.Out.WriteLine($"unchanged {Path.Combine(outDir, path)} ({content.Length} bytes, already these bytes)");
-            else
+            AbandonedTemporaries.Remove(outDir);
+            ForeignFileGuard.Refuse(outDir, files.Select(f => (f.Path, f.Content)));
+            foreach (var (path, content) in files)
             {
-                OutputFolder.WriteAtomically(outDir, path, content);
-                console.Out.WriteLine($"wrote {Path.Combine(outDir, path)} ({content.Length} bytes)");
+                console.Interrupted.ThrowIfCancellationRequested();
+                if (UnchangedCheck.IsUnchanged(outDir, path, content.Span))
+                    console.Out.WriteLine($"unchanged {Path.Combine(outDir, path)} ({content.Length} bytes, already these bytes)");
+                else
+                {
+                    AtomicOutput.Write(outDir, path, content);
+                    console.Out.WriteLine($"wrote {Path.Combine(outDir, path)} ({content.Length} bytes)");
+                }
             }
+            folder.RequireStillInPlace();
         }
         foreach (var s in scenes)
             console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture,

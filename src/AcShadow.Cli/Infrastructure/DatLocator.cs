@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat;
+using AcShadow.Files;
 using AcShadow.Forge;
 
 namespace AcShadow.Cli.Infrastructure;
@@ -15,6 +16,7 @@ public static class DatLocator
 
     public static OpenedDat Open(string? datOption, string? cellDatOption, CliConsole console)
     {
+        var watches = new List<DatFileWatch>();
         var portalPath = datOption ?? NullIfEmpty(console.Environment(EnvironmentVariable));
         if (portalPath is null)
         {
@@ -22,15 +24,15 @@ public static class DatLocator
             var (portalBytes, cellBytes) = SampleDats.Build();
             var samplePortal = OpenBytes(portalBytes, "sample/" + PortalFileName);
             var sampleCell = cellDatOption is null && cellBytes is not null ? OpenBytes(cellBytes, "sample/" + CellFileName) : null;
-            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell);
-            return new OpenedDat(samplePortal, cellFromOption ?? sampleCell, "the built-in synthetic sample", true);
+            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell, watches);
+            return new OpenedDat(samplePortal, cellFromOption ?? sampleCell, "the built-in synthetic sample", true, watches);
         }
         var source = datOption is null ? EnvironmentVariable : "--dat";
-        var portal = OpenFile(portalPath, PortalFileName, source, DatFileKind.Portal);
+        var portal = OpenFile(portalPath, PortalFileName, source, DatFileKind.Portal, watches);
         try
         {
-            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell);
-            return new OpenedDat(portal, cell, portal.Archive.Name, false);
+            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell, watches);
+            return new OpenedDat(portal, cell, portal.Archive.Name, false, watches);
         }
         catch
         {
@@ -43,17 +45,24 @@ public static class DatLocator
 
     private static DatDatabase OpenBytes(byte[] bytes, string name) => DatDatabase.Open(new MemoryStream(bytes, writable: false), name);
 
-    private static DatDatabase OpenFile(string path, string expectedName, string source, DatFileKind expectedKind)
+    private static DatDatabase OpenFile(string path, string expectedName, string source, DatFileKind expectedKind, List<DatFileWatch> watches)
     {
         var file = Directory.Exists(path) ? Path.Combine(path, expectedName) : path;
-        if (Directory.Exists(file))
+        // Links are followed (a dat kept elsewhere and linked in is the common case); what they lead to is checked.
+        var kind = FileKinds.Of(file, followLinks: true);
+        if (kind == FileKind.Missing && FileKinds.Of(file) == FileKind.SymbolicLink)
+            throw new CliException(ExitCodes.DatUnreadable, LinkProblem(file, source, expectedName));
+        if (kind == FileKind.Folder)
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: {file} is a folder, not a file: pass the path of your {expectedName}");
-        if (!File.Exists(file))
+        if (kind == FileKind.Missing)
             throw new CliException(ExitCodes.DatUnreadable, Directory.Exists(path)
                 ? $"{source}: folder {path} has no {expectedName}: pass the dat file itself or the folder that holds it"
                 : $"{source}: {path} does not exist: pass the path of your {expectedName} (or the folder holding it)");
-        // Checked before opening: a FIFO or a device reports no length, and opening a FIFO would wait forever.
-        var length = new FileInfo(file).Length;
+        // Checked before opening: opening a FIFO would wait for a writer forever, and a device has no length.
+        if (kind is not (FileKind.Regular or FileKind.Unknown))
+            throw new CliException(ExitCodes.DatUnreadable,
+                $"{source}: {file} is {FileKinds.Describe(kind)}, not a regular file: pass your {expectedName} (a dat is read at random places, so it cannot be streamed)");
+        var length = new FileInfo(file).ResolveLinkTarget(returnFinalTarget: true) is FileInfo target ? target.Length : new FileInfo(file).Length;
         if (length < DatHeader.Size)
             throw new CliException(ExitCodes.DatUnreadable,
                 $"{source}: {file} is {length} bytes, too short for a dat (or not a regular file): every dat starts with a {DatHeader.Size}-byte header; pass your {expectedName}");
@@ -79,17 +88,35 @@ public static class DatLocator
         {
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: cannot read {file}: {e.Message}");
         }
+        watches.Add(new DatFileWatch(file, stream));
         // The header's data set says which database this is; a swapped pair would otherwise read as empty.
         // Undefined is let through: a dat whose header does not say is tried rather than refused.
-        var kind = dat.Archive.Header.Kind;
-        if (kind != expectedKind && kind != DatFileKind.Undefined)
+        var datKind = dat.Archive.Header.Kind;
+        if (datKind != expectedKind && datKind != DatFileKind.Undefined)
         {
             dat.Dispose();
-            throw new CliException(ExitCodes.DatUnreadable, KindName(kind) is { } name
+            throw new CliException(ExitCodes.DatUnreadable, KindName(datKind) is { } name
                 ? $"{source}: {file} is {name} dat, not {KindName(expectedKind)} dat (its header says so): pass {expectedName} there"
-                : $"{source}: {file} is not a readable dat: its header names data set {(uint)kind}, which is no dat acshadow knows (1 portal, 2 cell, 3 language)");
+                : $"{source}: {file} is not a readable dat: its header names data set {(uint)datKind}, which is no dat acshadow knows (1 portal, 2 cell, 3 language)");
         }
         return dat;
+    }
+
+    /// <summary>A link that leads nowhere: a loop (said in words) or a missing target (named).</summary>
+    private static string LinkProblem(string file, string source, string expectedName)
+    {
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        var current = Path.GetFullPath(file);
+        // One link at a time (40 is the kernel's own limit): a path met twice is a loop.
+        for (var hop = 0; hop < 40 && FileKinds.Of(current) == FileKind.SymbolicLink; hop++)
+        {
+            if (!seen.Add(current)) break;
+            var target = new FileInfo(current).LinkTarget!;
+            current = Path.GetFullPath(target, Path.GetDirectoryName(current)!);
+        }
+        return FileKinds.Of(current) == FileKind.SymbolicLink
+            ? $"{source}: {file} is a symbolic link loop (following it leads back to {current}, never to a file): pass the path of your {expectedName}"
+            : $"{source}: {file} is a symbolic link to {current}, which does not exist: pass the path of your {expectedName}";
     }
 
     private static string? KindName(DatFileKind kind) => kind switch

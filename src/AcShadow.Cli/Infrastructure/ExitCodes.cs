@@ -10,4 +10,6 @@ public static class ExitCodes
     public const int NotInDat = 4;
     public const int Drift = 5;
     public const int OutputFailed = 6;
+    /// <summary>Ctrl-C (SIGINT): 128 + 2, as a shell reports a process the signal ended.</summary>
+    public const int Interrupted = 130;
 }

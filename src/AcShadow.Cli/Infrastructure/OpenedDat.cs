@@ -3,12 +3,24 @@ using AcShadow.Core.Dat;
 namespace AcShadow.Cli.Infrastructure;
 
 /// <summary>An open portal dat (and cell dat when one was asked for), with how to name it to the user.</summary>
-public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string description, bool isSample) : IDisposable
+public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string description, bool isSample, IReadOnlyList<DatFileWatch>? watches = null) : IDisposable
 {
     public DatDatabase Portal { get; } = portal;
     public DatDatabase? Cell { get; } = cell;
     public string Description { get; } = description;
     public bool IsSample { get; } = isSample;
+
+    /// <summary>
+    /// Fails (exit 3) when a dat file changed since it was opened: whatever was read after the change
+    /// cannot be trusted, so the run ends with one line instead of skipping objects that "do not decode".
+    /// </summary>
+    public void RequireUnchanged()
+    {
+        foreach (var watch in watches ?? [])
+            if (watch.Change() is { } change)
+                throw new CliException(ExitCodes.DatUnreadable,
+                    $"the dat changed while this run read it: {change}; nothing read after the change can be trusted: run again once the dat is complete");
+    }
 
     public void Dispose()
     {

@@ -64,6 +64,9 @@ public sealed class SelectionOptions
         }
     }
 
+    /// <summary>The most a --setups file may hold: 64 Ki ids of 11 bytes each and room for comments, far past any dat's Setups.</summary>
+    public const int MaxSetupListBytes = 16 << 20;
+
     private static SetupList ReadSetupList(string path)
     {
         if (!File.Exists(path))
@@ -71,7 +74,18 @@ public sealed class SelectionOptions
         string text;
         try
         {
-            text = File.ReadAllText(path);
+            // Bounded: /dev/zero or an endless pipe is refused at the limit instead of filling memory. A pipe
+            // (a shell's <(...)) is read like a file.
+            using var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.ReadWrite, 1 << 16);
+            var bytes = new MemoryStream();
+            var chunk = new byte[1 << 16];
+            for (int read; (read = stream.Read(chunk)) > 0;)
+            {
+                bytes.Write(chunk, 0, read);
+                if (bytes.Length > MaxSetupListBytes)
+                    throw new CliException(ExitCodes.Usage, $"--setups: {path} holds more than {MaxSetupListBytes >> 20} MiB: a Setup list is one id a line (every Setup of a dat is well under 1 MiB); pass a text file");
+            }
+            text = System.Text.Encoding.UTF8.GetString(bytes.GetBuffer(), 0, (int)bytes.Length).TrimStart('\uFEFF');
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

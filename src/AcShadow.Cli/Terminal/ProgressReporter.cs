@@ -19,13 +19,16 @@ public sealed class ProgressReporter
     private readonly bool _terminal;
     private readonly bool _quiet;
     private readonly string _unit;
+    private readonly string _label;
     private readonly Stopwatch _clock = Stopwatch.StartNew();
     private readonly Lock _lock = new();
     private TimeSpan _lastShown = TimeSpan.Zero;
     private bool _drawn;
 
-    public ProgressReporter(TextWriter error, bool isTerminal, bool quiet, string unit)
+    /// <param name="label">The command's name, which starts each plain progress line ("batch: …", "chart: …").</param>
+    public ProgressReporter(TextWriter error, bool isTerminal, bool quiet, string unit, string label)
     {
+        _label = label;
         _error = error;
         _terminal = isTerminal;
         _quiet = quiet;
@@ -48,7 +51,7 @@ public sealed class ProgressReporter
             }
             else if (!last)
             {
-                _error.WriteLine("batch: " + Counts(progress, now));
+                _error.WriteLine($"{_label}: " + Counts(progress, now));
             }
         }
     }

@@ -25,33 +25,45 @@ public static class BatchIndexReader
         }
         using (doc)
         {
-            var root = doc.RootElement;
-            var format = Str(root, "format", "$");
-            if (format != BatchIndexFormat.Format) throw new FormatException($"$.format is \"{format}\", expected \"{BatchIndexFormat.Format}\"");
-            var inputs = Member(root, "inputs", "$");
-            var policyText = Str(inputs, "policy", "$.inputs");
-            if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"$.inputs.policy \"{policyText}\" is not retail or union");
-            var scale = Member(inputs, "entityScale", "$.inputs");
-            if (scale.ValueKind != JsonValueKind.Number) throw new FormatException("$.inputs.entityScale is not a number");
-            var cell = Member(inputs, "cellDat", "$.inputs");
-            var result = new BatchInputs(
-                Dat(Member(inputs, "dat", "$.inputs"), "$.inputs.dat"),
-                cell.ValueKind == JsonValueKind.Null ? null : Dat(cell, "$.inputs.cellDat"),
-                policy,
-                scale.GetSingle(),
-                Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"))
+            try
             {
-                Formats = Formats(inputs),
-            };
-            var files = Member(root, "files", "$");
-            if (files.ValueKind != JsonValueKind.Array) throw new FormatException("$.files is not an array");
-            var list = files.EnumerateArray().Select((f, i) =>
+                return Read(doc.RootElement);
+            }
+            // JsonDocument.Parse checks structure only; a string holding bytes that are not UTF-8 fails when read.
+            catch (InvalidOperationException e) when (e.InnerException is System.Text.DecoderFallbackException)
             {
-                var at = $"$.files[{i}]";
-                return new IndexedFile(Str(f, "path", at), Str(f, "kind", at), Str(f, "id", at), Str(f, "sha256", at));
-            }).ToArray();
-            return new BatchIndex(result, list);
+                throw new FormatException($"a string is not UTF-8 text: {e.InnerException.Message}");
+            }
         }
+    }
+
+    private static BatchIndex Read(JsonElement root)
+    {
+        var format = Str(root, "format", "$");
+        if (format != BatchIndexFormat.Format) throw new FormatException($"$.format is \"{format}\", expected \"{BatchIndexFormat.Format}\"");
+        var inputs = Member(root, "inputs", "$");
+        var policyText = Str(inputs, "policy", "$.inputs");
+        if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"$.inputs.policy \"{policyText}\" is not retail or union");
+        var scale = Member(inputs, "entityScale", "$.inputs");
+        if (scale.ValueKind != JsonValueKind.Number) throw new FormatException("$.inputs.entityScale is not a number");
+        var cell = Member(inputs, "cellDat", "$.inputs");
+        var result = new BatchInputs(
+            Dat(Member(inputs, "dat", "$.inputs"), "$.inputs.dat"),
+            cell.ValueKind == JsonValueKind.Null ? null : Dat(cell, "$.inputs.cellDat"),
+            policy,
+            scale.GetSingle(),
+            Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"))
+        {
+            Formats = Formats(inputs),
+        };
+        var files = Member(root, "files", "$");
+        if (files.ValueKind != JsonValueKind.Array) throw new FormatException("$.files is not an array");
+        var list = files.EnumerateArray().Select((f, i) =>
+        {
+            var at = $"$.files[{i}]";
+            return new IndexedFile(Str(f, "path", at), Str(f, "kind", at), Str(f, "id", at), Str(f, "sha256", at));
+        }).ToArray();
+        return new BatchIndex(result, list);
     }
 
     private static OutputFormats Formats(JsonElement inputs)

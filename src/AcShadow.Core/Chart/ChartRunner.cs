@@ -16,21 +16,85 @@ public static class ChartRunner
 {
     public const string ModelFailed = "model-failed";
 
-    /// <summary>Charts every subject; <paramref name="progress"/> hears (objects done, objects in all) after each.</summary>
+    /// <summary>Charts every subject, all held in the report; <paramref name="progress"/> hears (objects done, objects in all) after each.</summary>
     public static ChartReport Run(IEnumerable<ChartSubject> subjects, ChartOptions options, IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null, Action<int, int>? progress = null)
+    {
+        models ??= ShapeModels.All;
+        var all = subjects.ToArray();
+        var charts = new List<ObjectChart>(all.Length);
+        Stream(all.Length, i => all[i], options, charts.Add, models, timer, progress);
+        return new ChartReport(options, models.Select(m => m.Name).ToArray(), charts);
+    }
+
+    /// <summary>
+    /// Charts <paramref name="count"/> subjects, made one at a time by <paramref name="subjectAt"/> (null: skipped),
+    /// handing each chart to <paramref name="finished"/> in subject order as soon as it and those before it are
+    /// done, and keeping only the totals: memory does not grow with the number of objects. With
+    /// <paramref name="jobs"/> above 1, objects are charted side by side (answers are the same; times are
+    /// measured while other objects run, so they are noisier).
+    /// </summary>
+    public static ChartTally Stream(int count, Func<int, ChartSubject?> subjectAt, ChartOptions options, Action<ObjectChart> finished,
+        IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null, Action<int, int>? progress = null, int jobs = 1,
+        CancellationToken cancellation = default)
     {
         if (options.Problem() is { } problem) throw new ArgumentException(problem, nameof(options));
         models ??= ShapeModels.All;
         if (models.Count == 0) throw new ArgumentException("at least the reference model is needed", nameof(models));
+        ArgumentOutOfRangeException.ThrowIfLessThan(jobs, 1);
         timer ??= new StopwatchQueryTimer();
-        var all = subjects.ToArray();
-        var charts = new List<ObjectChart>(all.Length);
-        foreach (var subject in all)
+        var tally = new ChartTally(models.Select(m => m.Name).ToArray());
+        var done = 0;
+        void Deliver(ObjectChart? chart)
         {
-            charts.Add(Chart(subject, options, models, timer));
-            progress?.Invoke(charts.Count, all.Length);
+            if (chart is not null)
+            {
+                tally.Add(chart);
+                finished(chart);
+            }
+            progress?.Invoke(++done, count);
         }
-        return new ChartReport(options, models.Select(m => m.Name).ToArray(), charts);
+        if (jobs == 1)
+        {
+            for (var i = 0; i < count; i++)
+            {
+                cancellation.ThrowIfCancellationRequested();
+                Deliver(subjectAt(i) is { } subject ? Chart(subject, options, models, timer) : null);
+            }
+            return tally;
+        }
+        // Side by side, delivered in order: a worker more than a few objects ahead of the next one to
+        // deliver waits, so finished-but-undelivered charts stay few.
+        var ready = new Dictionary<int, ObjectChart?>();
+        var next = 0;
+        var claimed = -1;
+        var gate = new object();
+        var window = jobs * 2;
+        Parallel.For(0, jobs, new ParallelOptions { MaxDegreeOfParallelism = jobs, CancellationToken = cancellation }, _ =>
+        {
+            while (true)
+            {
+                int i;
+                lock (gate)
+                {
+                    while (claimed + 1 - next >= window && !cancellation.IsCancellationRequested) Monitor.Wait(gate, 100);
+                    cancellation.ThrowIfCancellationRequested();
+                    i = ++claimed;
+                }
+                if (i >= count) return;
+                var chart = subjectAt(i) is { } subject ? Chart(subject, options, models, timer) : null;
+                lock (gate)
+                {
+                    ready[i] = chart;
+                    while (ready.Remove(next, out var deliverable))
+                    {
+                        Deliver(deliverable);
+                        next++;
+                    }
+                    Monitor.PulseAll(gate);
+                }
+            }
+        });
+        return tally;
     }
 
     public static ObjectChart Chart(ChartSubject subject, ChartOptions options, IReadOnlyList<IShapeModel> models, IQueryTimer timer)

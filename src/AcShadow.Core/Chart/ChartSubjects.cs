@@ -5,46 +5,86 @@ using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 
-/// <summary>Chart subjects from a dat: each Setup with cached GfxObj and compiled-BSP lookups shared across Setups.</summary>
+/// <summary>
+/// Chart subjects from a dat: each Setup with cached GfxObj and compiled-BSP lookups shared across Setups.
+/// The caches hold at most about <see cref="CacheCapacity"/> GfxObjs: past that they are started afresh
+/// before the next subject (a subject made earlier keeps the caches it was made with), so charting a
+/// whole dat does not keep every GfxObj of it in memory.
+/// </summary>
 public sealed class ChartSubjects
 {
+    public const int DefaultCacheCapacity = 2048;
+
     private readonly IDatSource _dat;
-    private readonly Dictionary<uint, GfxObj?> _gfxObjs = [];
+    private Dictionary<uint, GfxObj?> _gfxObjs = [];
     private readonly Lock _lock = new();
 
-    public CompiledBspCache Bsps { get; }
+    public CompiledBspCache Bsps { get; private set; }
+    public int CacheCapacity { get; }
 
     /// <summary>The portal dat the subjects come from.</summary>
     public IDatSource Dat => _dat;
 
-    public ChartSubjects(IDatSource dat)
+    public ChartSubjects(IDatSource dat, int cacheCapacity = DefaultCacheCapacity)
     {
         _dat = dat;
-        Bsps = new CompiledBspCache(id => GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
+        CacheCapacity = cacheCapacity;
+        Bsps = NewBspCache(_gfxObjs);
+    }
+
+    private CompiledBspCache NewBspCache(Dictionary<uint, GfxObj?> gfxObjs) =>
+        new(id => Read(gfxObjs, id) is { } g ? BspExtractor.Extract(g) : null);
+
+    /// <summary>The current caches, started afresh when full.</summary>
+    private (Func<uint, GfxObj?> GfxObjs, Func<uint, CompiledBsp?> Bsps) Caches()
+    {
+        lock (_lock)
+        {
+            if (_gfxObjs.Count > CacheCapacity)
+            {
+                _gfxObjs = [];
+                Bsps = NewBspCache(_gfxObjs);
+            }
+            var gfxObjs = _gfxObjs;
+            return (id => Read(gfxObjs, id), Bsps.Get);
+        }
+    }
+
+    private GfxObj? Read(Dictionary<uint, GfxObj?> cache, uint id)
+    {
+        lock (cache)
+        {
+            if (cache.TryGetValue(id, out var known)) return known;
+            GfxObj? read;
+            try { read = _dat.ReadGfxObj(id); }
+            catch (DatFormatException) { read = null; }
+            cache[id] = read;
+            return read;
+        }
     }
 
     /// <summary>The GfxObj, or null when the dat does not have it or cannot decode it (the shape builder reports either).</summary>
     public GfxObj? GfxObj(uint id)
     {
-        lock (_lock)
-        {
-            if (_gfxObjs.TryGetValue(id, out var known)) return known;
-            GfxObj? read;
-            try { read = _dat.ReadGfxObj(id); }
-            catch (DatFormatException) { read = null; }
-            _gfxObjs[id] = read;
-            return read;
-        }
+        Dictionary<uint, GfxObj?> cache;
+        lock (_lock) cache = _gfxObjs;
+        return Read(cache, id);
     }
 
     /// <summary>
     /// The subject for a bare GfxObj a landblock places: the same one-part object a scene export describes
     /// (<see cref="Scenes.BareGfxObjShape"/>), or null when the dat has no such GfxObj.
     /// </summary>
-    public ChartSubject? ForBareGfxObj(uint gfxObjId, float entityScale = 1f) =>
-        GfxObj(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), GfxObj, Bsps.Get, entityScale) : null;
+    public ChartSubject? ForBareGfxObj(uint gfxObjId, float entityScale = 1f)
+    {
+        var (gfxObjs, bsps) = Caches();
+        return gfxObjs(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), gfxObjs, bsps, entityScale) : null;
+    }
 
     /// <summary>The subject for a Setup, or null when the dat has no such Setup.</summary>
-    public ChartSubject? For(uint setupId, float entityScale = 1f) =>
-        _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, GfxObj, Bsps.Get, entityScale) : null;
+    public ChartSubject? For(uint setupId, float entityScale = 1f)
+    {
+        var (gfxObjs, bsps) = Caches();
+        return _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, gfxObjs, bsps, entityScale) : null;
+    }
 }

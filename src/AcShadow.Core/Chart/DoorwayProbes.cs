@@ -24,12 +24,16 @@ public static class DoorwayProbes
         return new Opening(reference.Center, acrossIsY, wide * 0.5f, thin * 0.5f);
     }
 
+    public const int MaxStepsPerLine = 4096;
+
     public static IReadOnlyList<Probe> Build(Opening? opening, ChartOptions options)
     {
         if (opening is null) return [];
         var probes = new List<Probe>();
         var reach = opening.HalfThickness + options.ProbeRadius + 0.25f;
-        var steps = (int)MathF.Floor(2f * reach / options.DoorwayStep);
+        // At most MaxStepsPerLine per line: a door scaled up hugely gets a coarser step, not millions of probes.
+        var step = Math.Max(options.DoorwayStep, 2f * reach / MaxStepsPerLine);
+        var steps = (int)MathF.Floor(2f * reach / step);
         var z = options.EffectiveWalkHeight;
         var offsets = options.DoorwayOffsets.Order().ToArray();
         for (var line = 0; line < offsets.Length; line++)
@@ -37,7 +41,7 @@ public static class DoorwayProbes
             var lateral = offsets[line] * opening.HalfWidth;
             for (var s = 0; s <= steps; s++)
             {
-                var along = -reach + s * options.DoorwayStep;
+                var along = -reach + s * step;
                 var center = opening.AcrossIsY
                     ? new Vector3(opening.Center.X + lateral, opening.Center.Y + along, z)
                     : new Vector3(opening.Center.X + along, opening.Center.Y + lateral, z);

@@ -24,21 +24,25 @@ public static class ProbeGrid
             var (x0, nx) = Steps(region.Min.X, region.Max.X, 0f, spacing);
             var (y0, ny) = Steps(region.Min.Y, region.Max.Y, 0f, spacing);
             var (z0, nz) = Steps(region.Min.Z, region.Max.Z, walk, spacing);
-            if ((long)nx * ny * nz > options.MaxGridProbes && spacing < 1e3f) { spacing *= 2f; continue; }
-            var probes = new List<Probe>(nx * ny * nz);
-            for (var k = 0; k < nz; k++)
-                for (var j = 0; j < ny; j++)
-                    for (var i = 0; i < nx; i++)
+            // Coarsened until it fits, however large the object (a huge --scale): the probe count, not the
+            // spacing, is what memory and time answer to.
+            if ((double)nx * ny * nz > options.MaxGridProbes) { spacing *= 2f; continue; }
+            var probes = new List<Probe>((int)(nx * ny * nz));
+            for (var k = 0L; k < nz; k++)
+                for (var j = 0L; j < ny; j++)
+                    for (var i = 0L; i < nx; i++)
                         probes.Add(new Probe(new Vector3((x0 + i) * spacing, (y0 + j) * spacing, walk + (z0 + k) * spacing), options.ProbeRadius, ProbeKind.Grid));
             return new Result(probes, spacing, region);
         }
     }
 
     /// <summary>First step index and count of the points origin + k·step inside [min, max].</summary>
-    private static (int First, int Count) Steps(float min, float max, float origin, float step)
+    private static (long First, long Count) Steps(float min, float max, float origin, float step)
     {
-        var first = (int)MathF.Ceiling((min - origin) / step);
-        var last = (int)MathF.Floor((max - origin) / step);
-        return (first, Math.Max(1, last - first + 1));
+        // In double and clamped: a region far larger than the step must not overflow into a negative count.
+        var first = Math.Ceiling(((double)min - origin) / step);
+        var last = Math.Floor(((double)max - origin) / step);
+        var count = Math.Clamp(last - first + 1, 1, 1e12);
+        return ((long)Math.Clamp(first, -1e15, 1e15), (long)count);
     }
 }

@@ -14,7 +14,8 @@ namespace AcShadow.Core.Chart;
 /// </summary>
 public sealed class StopwatchQueryTimer(TimeSpan? firstWarmup = null) : IQueryTimer
 {
-    private readonly HashSet<string> _warmed = [];
+    // Process-wide: what the long first warm-up buys (optimised code) lasts for the process, not the run.
+    private static readonly HashSet<string> Warmed = [];
     private int _sink;
 
     public TimeSpan FirstWarmup { get; } = firstWarmup ?? TimeSpan.FromMilliseconds(600);
@@ -36,7 +37,7 @@ public sealed class StopwatchQueryTimer(TimeSpan? firstWarmup = null) : IQueryTi
         }
         for (var w = 0; w < options.WarmupPasses; w++) _sink += Pass(model, centers, radii);
         bool first;
-        lock (_warmed) first = _warmed.Add(modelName);
+        lock (Warmed) first = Warmed.Add(modelName);
         if (first)
         {
             var warm = Stopwatch.StartNew();

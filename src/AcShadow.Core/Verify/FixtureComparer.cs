@@ -16,12 +16,41 @@ public static class FixtureComparer
             var old = actual[path];
             var fresh = expected[path];
             if (old.AsSpan().SequenceEqual(fresh.Span)) continue;
+            // A checkout that turned LF into CRLF (Git for Windows' core.autocrlf) changes every file the same
+            // harmless way: said as such, not as hundreds of differences.
+            if (IsCrlfOf(old, fresh.Span))
+            {
+                changed.Add(new ChangedFile(path, [], OnlyLineEndings: true));
+                continue;
+            }
             changed.Add(new ChangedFile(path, JsonDiff.Compare(old, fresh.ToArray())));
         }
         return new FixtureComparison(missing, extra, changed, datDifferences, expected.Count);
     }
 
     /// <summary>What differs between the dat index.json recorded and the dat at hand: name, size, iteration.</summary>
+    /// <summary>True when <paramref name="old"/> is <paramref name="fresh"/> with every LF written CRLF.</summary>
+    internal static bool IsCrlfOf(ReadOnlySpan<byte> old, ReadOnlySpan<byte> fresh)
+    {
+        if (old.Length <= fresh.Length) return false;
+        int i = 0, j = 0;
+        while (i < old.Length && j < fresh.Length)
+        {
+            if (fresh[j] == (byte)'\n')
+            {
+                if (old[i] != (byte)'\r' || i + 1 >= old.Length || old[i + 1] != (byte)'\n') return false;
+                i += 2;
+            }
+            else
+            {
+                if (old[i] != fresh[j]) return false;
+                i++;
+            }
+            j++;
+        }
+        return i == old.Length && j == fresh.Length;
+    }
+
     public static IReadOnlyList<string> DatDifferences(string label, DatSourceInfo? recorded, DatSourceInfo? current)
     {
         if (recorded is null && current is null) return [];

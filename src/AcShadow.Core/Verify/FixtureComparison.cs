@@ -1,7 +1,7 @@
 namespace AcShadow.Core.Verify;
 
 /// <summary>A file whose bytes differ: the JSON differences (null when a side is not JSON).</summary>
-public sealed record ChangedFile(string Path, IReadOnlyList<JsonDifference>? Differences);
+public sealed record ChangedFile(string Path, IReadOnlyList<JsonDifference>? Differences, bool OnlyLineEndings = false);
 
 /// <summary>
 /// How a fixtures folder compares with a fresh regeneration. Missing: regeneration writes it, the

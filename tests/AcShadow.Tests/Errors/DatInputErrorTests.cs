@@ -157,7 +157,7 @@ public class DatInputErrorTests
         // Opening a FIFO for reading waits for a writer: a regression would hang here, not fail.
         var run = Task.Run(() => Run("dump", output.Path, "--dat", fifo));
         Assert.True(await Task.WhenAny(run, Task.Delay(TimeSpan.FromSeconds(60))) == run, "acshadow opened the FIFO and waited for a writer");
-        AssertDatError(await run, output, "too short for a dat (or not a regular file)");
+        AssertDatError(await run, output, "is a FIFO (named pipe), not a regular file");
     }
 
     [Fact]

@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
+using AcShadow.Files;
 using AcShadow.Forge;
 using AcShadow.Tests.Support;
 
@@ -32,15 +33,17 @@ public class InterruptedBatchTests
 
         using (var process = Process.Start(BuiltCli.Start([], "batch", "--all", "--dat", dats, "--out", cut, "--jobs", "1", "--quiet"))!)
         {
-            // Output appears only once the export is done, file by file: kill as soon as the first lands.
-            while (!process.HasExited && !FilesUnder(cut).Any(f => !IsTemporary(f))) Thread.Sleep(2);
+            // Output appears only once the export is done, file by file: kill as soon as the first lands
+            // (the folder's lock file comes first, and is not output).
+            while (!process.HasExited && !FilesUnder(cut).Any(IsOutput)) Thread.Sleep(2);
             Assert.False(process.HasExited, "the batch finished before it could be killed");
             process.Kill();
             process.WaitForExit();
         }
 
         Assert.False(File.Exists(Path.Combine(cut, "index.json")), "index.json is written last, so a killed run has none");
-        var left = FilesUnder(cut).Where(f => !IsTemporary(f)).ToArray();
+        // The killed run's lock file stays (empty of meaning: the lock died with the process); it is not output.
+        var left = FilesUnder(cut).Where(IsOutput).ToArray();
         Assert.InRange(left.Length, 1, expectedFiles - 2);
         foreach (var file in left.Where(f => f.EndsWith(".shadow.json", StringComparison.Ordinal))) ShadowFileReader.Read(File.ReadAllText(file));
         foreach (var file in left.Where(f => f.EndsWith(".bsp.json", StringComparison.Ordinal))) BspFileReader.Read(File.ReadAllText(file));
@@ -65,4 +68,6 @@ public class InterruptedBatchTests
         Directory.Exists(folder) ? Directory.GetFiles(folder, "*", SearchOption.AllDirectories) : [];
 
     private static bool IsTemporary(string path) => path.EndsWith(".tmp", StringComparison.Ordinal);
+
+    private static bool IsOutput(string path) => !IsTemporary(path) && Path.GetFileName(path) != FolderLock.FileName;
 }

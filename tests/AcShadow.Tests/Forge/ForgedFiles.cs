@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat;
+using AcShadow.Files;
 using AcShadow.Forge;
 
 namespace AcShadow.Tests.Forge;
@@ -37,8 +38,8 @@ public sealed class ForgedFiles : IDisposable
     public static ForgedFiles Write(ForgedDats dats)
     {
         var dir = NewDirectory();
-        AtomicFile.Write(Path.Combine(dir, ForgeApp.PortalFileName), dats.Portal);
-        if (dats.Cell is { } cell) AtomicFile.Write(Path.Combine(dir, ForgeApp.CellFileName), cell);
+        AtomicFile.Write(Path.Combine(dir, ForgeApp.PortalFileName), dats.Portal, Durability.Flushed);
+        if (dats.Cell is { } cell) AtomicFile.Write(Path.Combine(dir, ForgeApp.CellFileName), cell, Durability.Flushed);
         return new ForgedFiles(dir);
     }
 

@@ -3,15 +3,19 @@ using AcShadow.Fuzz;
 namespace AcShadow.Tests.Fuzz;
 
 /// <summary>
-/// CI's fixed-seed campaign: 2,000 damaged copies of the sample dats, each run through `dump`
-/// and `batch`; every one must end with a documented exit code, a "corrupt dat" message naming the object
-/// when one is damaged, whole output files, and within the time and memory limits.
+/// CI's fixed-seed campaign: 2,000 damaged copies of the sample dats, each run through `dump` and `batch`,
+/// every 8th also through `chart` and `verify` (on the batch's fixtures with one byte damaged); every
+/// command must end with a documented exit code, a "corrupt dat" message naming the object when one is
+/// damaged, whole output files, and within the time and memory limits.
 /// </summary>
 [Trait("Speed", "Slow")]
 public class FuzzCampaignTests
 {
     public const long Seed = 20261122;
     public const int Cases = 2000;
+
+    /// <summary>Chart and verify on every 8th case: 250 of them, so the campaign stays near two minutes on two cores.</summary>
+    public const int DeepEvery = 8;
 
     [Fact]
     public void A_fixed_seed_campaign_of_2000_damaged_dats_finds_no_failure()
@@ -21,7 +25,7 @@ public class FuzzCampaignTests
         try
         {
             // A generous time limit: the suite runs other tests beside this one on two shared cores.
-            result = FuzzCampaign.Run(FuzzBase.All(), new CampaignOptions(Seed, Cases, TimeLimitSeconds: 30), scratch);
+            result = FuzzCampaign.Run(FuzzBase.All(), new CampaignOptions(Seed, Cases, TimeLimitSeconds: 30, DeepEvery: DeepEvery), scratch);
         }
         finally
         {
@@ -29,6 +33,8 @@ public class FuzzCampaignTests
         }
 
         Assert.Equal(Cases, result.Cases);
+        Assert.Equal(Cases / DeepEvery, result.DeepCases);
+        Assert.Equal(["batch", "chart", "dump", "verify"], result.CommandTimes.Keys.Order(StringComparer.Ordinal).ToArray());
         Assert.True(result.FailedCases == 0, string.Join("\n", result.Failures.Select(f =>
             $"{f.Failure.Signature} ({result.FailureCounts[f.Failure.Signature]} cases); first: {f.Input.Description}\n{f.Failure.Detail}")));
         // The campaign reaches both the happy path and the refusals: a campaign that never damaged

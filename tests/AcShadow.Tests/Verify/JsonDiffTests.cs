@@ -45,4 +45,12 @@ public class JsonDiffTests
         Assert.Equal("$[\"two words\"]: 1 → 2", Assert.Single(Diff("""{"two words": 1}""", """{"two words": 2}""")).ToString());
         Assert.Null(JsonDiff.Compare(Encoding.UTF8.GetBytes("{"), Encoding.UTF8.GetBytes("{}")));
     }
+
+    [Fact]
+    public void Json_holding_bytes_that_are_not_UTF8_is_not_comparable_rather_than_an_error()
+    {
+        // Found by the fuzz campaign: a damaged fixture whose string holds an invalid UTF-8 byte parses, but its text cannot be read.
+        byte[] broken = [.. "{\"a\": \""u8, 0xC3, 0x28, .. "\"}"u8];
+        Assert.Null(JsonDiff.Compare(broken, "{\"a\": \"x\"}"u8.ToArray()));
+    }
 }

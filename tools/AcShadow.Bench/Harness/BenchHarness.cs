@@ -72,6 +72,18 @@ public static class BenchHarness
                 }
             }
 
+            // chart --all at the scale of a real dat: one timed run (it takes minutes), default spacing and
+            // probe radius, every core, streamed into a folder on disk. Not in --small: CI times nothing.
+            if (!options.Small)
+            {
+                var chartOut = Path.Combine(options.WorkDirectory, "chart");
+                timings.Add(Measure(log, options with { Repetitions = 1 }, "chart --all", "full", cores, "disk",
+                    $"acshadow chart --all --jobs {cores} --quiet, default spacing and probe radius (one run, no warm-up)",
+                    _ => { Reset(chartOut); return ProcessRunner.Run(options.Cli, ["chart", "--all", "--dat", full.Directory, "--out", chartOut, "--jobs", Text(cores), "--quiet"]); },
+                    warmUp: false));
+                Reset(chartOut);
+            }
+
             var dumpOut = Path.Combine(options.WorkDirectory, "dump");
             timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "none", "whole process",
                 _ => ProcessRunner.Run(options.Cli, ["--version"])));
@@ -134,10 +146,11 @@ public static class BenchHarness
     private static IEnumerable<(string Output, string Root)> OutputPlaces(HarnessOptions options) =>
         options.MemoryWorkDirectory is { } memory ? [("disk", options.WorkDirectory), ("memory", memory)] : [("disk", options.WorkDirectory)];
 
-    private static Timing Measure(TextWriter log, HarnessOptions options, string name, string size, int jobs, string output, string how, Func<int, ProcessRunner.Outcome> run)
+    private static Timing Measure(TextWriter log, HarnessOptions options, string name, string size, int jobs, string output, string how, Func<int, ProcessRunner.Outcome> run,
+        bool warmUp = true)
     {
-        log.Write($"{name} ({size}, {jobs} job(s), output: {output}): warm-up");
-        run(-1);
+        log.Write($"{name} ({size}, {jobs} job(s), output: {output}):{(warmUp ? " warm-up" : "")}");
+        if (warmUp) run(-1);
         var seconds = new List<double>();
         var peaks = new List<double>();
         var cpu = new List<double>();

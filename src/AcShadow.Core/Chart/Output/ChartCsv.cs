@@ -14,25 +14,30 @@ public static class ChartCsv
     public static string Write(ChartReport report)
     {
         var csv = new StringBuilder(Header).Append('\n');
-        foreach (var o in report.Objects)
+        foreach (var o in report.Objects) csv.Append(Rows(o));
+        return csv.ToString();
+    }
+
+    /// <summary>One object's rows (one per model), each ending in a newline.</summary>
+    public static string Rows(ObjectChart o)
+    {
+        var csv = new StringBuilder();
+        var kinds = ProbeKinds.Stability.Select(k => I(ChartProbes.Count(o.Probes, k))).ToArray();
+        foreach (var m in o.Models)
         {
-            var kinds = ProbeKinds.Stability.Select(k => I(ChartProbes.Count(o.Probes, k))).ToArray();
-            foreach (var m in o.Models)
+            int stabilityPass = 0, stabilityBlock = 0;
+            for (var i = 0; i < o.Probes.Count; i++)
             {
-                int stabilityPass = 0, stabilityBlock = 0;
-                for (var i = 0; i < o.Probes.Count; i++)
-                {
-                    if (!ProbeKinds.IsStability(o.Probes[i].Kind) || m.Answers[i] == o.Reference[i]) continue;
-                    if (o.Reference[i]) stabilityPass++; else stabilityBlock++;
-                }
-                csv.Append(string.Join(',',
-                    Id(o.SetupId), Csv(m.Model), I(m.ShapeCount), I(m.Probes), I(m.DoorwayProbes), I(m.Agree), F(m.AgreementPercent, 3),
-                    I(m.FalsePass), I(m.FalseBlock), I(m.DoorwayFalsePass), I(m.DoorwayFalseBlock),
-                    F(m.Timing.MedianNs, 1), F(m.Timing.P10Ns, 1), F(m.Timing.P90Ns, 1),
-                    m.Exact ? "yes" : "no", m.Model == o.CheapestExact ? "yes" : "no", F(o.GridSpacing, 3), I(m.Diagnostics.Count),
-                    string.Join(',', kinds), I(stabilityPass), I(stabilityBlock)));
-                csv.Append('\n');
+                if (!ProbeKinds.IsStability(o.Probes[i].Kind) || m.Answers[i] == o.Reference[i]) continue;
+                if (o.Reference[i]) stabilityPass++; else stabilityBlock++;
             }
+            csv.Append(string.Join(',',
+                Id(o.SetupId), Csv(m.Model), I(m.ShapeCount), I(m.Probes), I(m.DoorwayProbes), I(m.Agree), F(m.AgreementPercent, 3),
+                I(m.FalsePass), I(m.FalseBlock), I(m.DoorwayFalsePass), I(m.DoorwayFalseBlock),
+                F(m.Timing.MedianNs, 1), F(m.Timing.P10Ns, 1), F(m.Timing.P90Ns, 1),
+                m.Exact ? "yes" : "no", m.Model == o.CheapestExact ? "yes" : "no", F(o.GridSpacing, 3), I(m.Diagnostics.Count),
+                string.Join(',', kinds), I(stabilityPass), I(stabilityBlock)));
+            csv.Append('\n');
         }
         return csv.ToString();
     }

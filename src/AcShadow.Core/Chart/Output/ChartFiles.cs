@@ -18,5 +18,24 @@ public static class ChartFiles
         return files;
     }
 
+    /// <summary>
+    /// The files a run over these objects writes, each with the start of its content (its header row or
+    /// root element): for checking, before any object is charted, that no file acshadow does not own would
+    /// be replaced.
+    /// </summary>
+    public static IEnumerable<ChartFile> Heads(IEnumerable<uint> objectIds)
+    {
+        var svg = new UTF8Encoding(false).GetBytes(new SvgDocument(1, 1).Render());
+        yield return Utf8("chart.csv", ChartCsv.Header + "\n");
+        yield return Utf8("summary.csv", SummaryCsv.Header + "\n");
+        yield return Utf8("failures.csv", FailuresCsv.Header + "\n");
+        yield return new ChartFile("speed-accuracy.svg", svg);
+        foreach (var id in objectIds) yield return new ChartFile(FailureMapSvg.FileName(id), svg);
+    }
+
+    /// <summary>One object's failure map, rendered as soon as the object is charted.</summary>
+    public static ChartFile FailureMap(ChartOptions options, IReadOnlyList<string> models, ObjectChart chart) =>
+        Utf8(FailureMapSvg.FileName(chart.SetupId), FailureMapSvg.Write(new ChartReport(options, models, []), chart));
+
     private static ChartFile Utf8(string path, string text) => new(path, new UTF8Encoding(false).GetBytes(text));
 }

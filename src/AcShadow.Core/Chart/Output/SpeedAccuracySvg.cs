@@ -12,9 +12,10 @@ public static class SpeedAccuracySvg
     private const double Width = 1080, Height = 620;
     private const double Left = 90, Right = 400, Top = 78, Bottom = 74;
 
-    public static string Write(ChartReport report)
+    public static string Write(ChartReport report) => Write(report.Options, report.Reference, report.Objects.Count, ModelSummary.All(report));
+
+    public static string Write(ChartOptions options, string reference, int objects, IReadOnlyList<ModelSummary> summaries)
     {
-        var summaries = ModelSummary.All(report);
         var svg = new SvgDocument(Width, Height);
         double plotW = Width - Left - Right, plotH = Height - Top - Bottom;
 
@@ -31,10 +32,10 @@ public static class SpeedAccuracySvg
         var yTop = 100 + (100 - yMin) * 0.08;
         double Y(double pct) => Top + (yTop - Math.Clamp(pct, yMin, 100)) / (yTop - yMin) * plotH;
 
-        svg.Text(Width / 2, 30, $"Speed against accuracy: each model against the {report.Reference} reference", 18, "middle", "bold");
+        svg.Text(Width / 2, 30, $"Speed against accuracy: each model against the {reference} reference", 18, "middle", "bold");
         var probes = summaries.Count > 0 ? summaries[0].Probes : 0;
         svg.Text(Width / 2, 52,
-            $"{I(report.Objects.Count)} object(s), {I(probes)} probes per model (probe radius {F(report.Options.ProbeRadius, 2)} m, grid spacing {F(report.Options.Spacing, 2)} m)",
+            $"{I(objects)} object(s), {I(probes)} probes per model (probe radius {F(options.ProbeRadius, 2)} m, grid spacing {F(options.Spacing, 2)} m)",
             13, "middle");
 
         // Axes, decade grid and minor ticks.

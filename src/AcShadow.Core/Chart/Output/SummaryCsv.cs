@@ -14,10 +14,12 @@ public static class SummaryCsv
         "model,objects,probes,agree,agreement_pct,false_pass,false_block,doorway_probes,doorway_false_pass,doorway_false_block," +
         "exact_objects,min_object_agreement_pct,max_object_agreement_pct,median_ns_per_query,p10_ns_per_query,p90_ns_per_query,cheapest_exact_objects";
 
-    public static string Write(ChartReport report)
+    public static string Write(ChartReport report) => Write(ModelSummary.All(report));
+
+    public static string Write(IReadOnlyList<ModelSummary> summaries)
     {
         var csv = new StringBuilder(Header).Append('\n');
-        foreach (var s in ModelSummary.All(report))
+        foreach (var s in summaries)
         {
             csv.Append(string.Join(',',
                 Csv(s.Model), I(s.Objects), I(s.Probes), I(s.Agree), F(s.AgreementPercent, 3), I(s.FalsePass), I(s.FalseBlock),

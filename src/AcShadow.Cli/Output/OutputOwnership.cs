@@ -1,6 +1,6 @@
 using System.Text;
 
-namespace AcShadow.Cli.Infrastructure;
+namespace AcShadow.Cli.Output;
 
 /// <summary>
 /// Whether an existing file is acshadow's to replace: its first line holding a letter must be the one

@@ -1,0 +1,38 @@
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Files;
+
+namespace AcShadow.Cli.Output;
+
+/// <summary>
+/// A file the user names outright (audit's --out FILE), treated as a shell redirection would: a regular
+/// file (or none) is replaced atomically; a device, FIFO or socket (--out /dev/stdout, a named pipe) is
+/// written into, never replaced; a symbolic link is written through, so the link stays and the file it
+/// leads to gets the report.
+/// </summary>
+public static class ExplicitOutputFile
+{
+    public static void Write(string path, byte[] content, string example = "audit.csv")
+    {
+        OutputPaths.RequireNamed(path);
+        var full = Path.GetFullPath(path);
+        var kind = FileKinds.Of(full);
+        try
+        {
+            if (kind is FileKind.Missing or FileKind.Regular or FileKind.Unknown)
+            {
+                AtomicOutput.Write(Path.GetDirectoryName(full)!, Path.GetFileName(full), content);
+                return;
+            }
+            if (FileKinds.Of(full, followLinks: true) is var target && target is FileKind.Folder or FileKind.Missing)
+                throw new CliException(ExitCodes.OutputFailed, target == FileKind.Folder
+                    ? $"--out: {path} leads to a folder: pass a file name, e.g. {example}"
+                    : $"--out: {path} is a symbolic link that leads nowhere (or round in a loop): pass a file name, e.g. {example}");
+            using var stream = new FileStream(full, FileMode.Create, FileAccess.Write, FileShare.ReadWrite, bufferSize: 0);
+            stream.Write(content);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"cannot write {path}: {e.Message}");
+        }
+    }
+}

@@ -1,0 +1,17 @@
+using AcShadow.Cli.Infrastructure;
+
+namespace AcShadow.Cli.Output;
+
+/// <summary>Where a file of a run lands: its relative path (always '/'-separated) under the output folder.</summary>
+public static class OutputPaths
+{
+    public static string Target(string root, string relativePath) =>
+        Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
+
+    /// <summary>An empty --out is a usage mistake (an unquoted empty variable), not a path to resolve.</summary>
+    public static void RequireNamed(string path, string option = "--out")
+    {
+        if (string.IsNullOrWhiteSpace(path))
+            throw new CliException(ExitCodes.Usage, $"{option}: the path is empty: pass a folder (e.g. {option} fixtures)");
+    }
+}

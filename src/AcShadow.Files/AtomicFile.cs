@@ -1,0 +1,120 @@
+using Microsoft.Win32.SafeHandles;
+
+namespace AcShadow.Files;
+
+/// <summary>
+/// Writes a file whole or not at all, for every tool of the repository: the bytes go to <c>NAME.PID.tmp</c>
+/// beside the target (same folder, so same file system, so the rename is atomic), which is then renamed over
+/// the target. A killed process leaves the old file or the new one, whole, and at most a <c>.tmp</c> whose
+/// process id says it was abandoned. Whether the bytes are flushed to the disk first is the caller's
+/// <see cref="Durability"/>. Only a regular file (or nothing) is replaced: a device, FIFO, socket, symbolic
+/// link or folder at the target is a <see cref="NotARegularFileException"/>, and nothing is written.
+/// </summary>
+public static class AtomicFile
+{
+    public const string TemporarySuffix = ".tmp";
+
+    /// <summary>The temporary name a write of <paramref name="target"/> by this process uses.</summary>
+    public static string TemporaryFor(string target) => $"{target}.{Environment.ProcessId}{TemporarySuffix}";
+
+    /// <summary>Writes <paramref name="content"/> to <paramref name="path"/>; returns its length.</summary>
+    public static long Write(string path, ReadOnlySpan<byte> content, Durability durability)
+    {
+        var full = Path.GetFullPath(path);
+        RequireReplaceable(full);
+        var temp = TemporaryFor(full);
+        try
+        {
+            using (var handle = CreateTemporary(temp))
+            {
+                // One positional write: no stream buffer, seek or truncate of a file just created (a batch
+                // writes tens of thousands). Not File.WriteAllBytes: it preallocates the length first, and a
+                // file the file system cannot hold then fails as an ArgumentException, not the write's I/O error.
+                RandomAccess.Write(handle, content, 0);
+                if (durability == Durability.Flushed) RandomAccess.FlushToDisk(handle);
+            }
+            Replace(temp, full);
+            return content.Length;
+        }
+        catch
+        {
+            TryDelete(temp);
+            throw;
+        }
+    }
+
+    /// <summary>As <see cref="Write(string, ReadOnlySpan{byte}, Durability)"/>, for content <paramref name="write"/> streams (in large chunks: the stream is unbuffered).</summary>
+    public static long Write(string path, Action<Stream> write, Durability durability)
+    {
+        var full = Path.GetFullPath(path);
+        RequireReplaceable(full);
+        var temp = TemporaryFor(full);
+        try
+        {
+            long length;
+            using (var handle = CreateTemporary(temp))
+            {
+                using (var stream = new FileStream(handle, FileAccess.Write, bufferSize: 0))
+                {
+                    write(stream);
+                    length = stream.Position;
+                }
+                if (durability == Durability.Flushed) RandomAccess.FlushToDisk(handle);
+            }
+            Replace(temp, full);
+            return length;
+        }
+        catch
+        {
+            TryDelete(temp);
+            throw;
+        }
+    }
+
+    /// <summary>Throws <see cref="NotARegularFileException"/> unless <paramref name="path"/> is missing or a regular file.</summary>
+    public static void RequireReplaceable(string path)
+    {
+        var kind = FileKinds.Of(path);
+        if (kind is not (FileKind.Missing or FileKind.Regular or FileKind.Unknown)) throw new NotARegularFileException(path, kind);
+    }
+
+    /// <summary>The check again right before the rename: a FIFO or link put there while the bytes were written is not replaced either.</summary>
+    private static void Replace(string temp, string target)
+    {
+        RequireReplaceable(target);
+        File.Move(temp, target, overwrite: true);
+    }
+
+    /// <summary>
+    /// The temporary file, created new (nothing to truncate). Its folder is made when missing, but not the
+    /// folder above it: a destination whose parent vanished (moved or deleted while a run writes) is an
+    /// error, not something to recreate. One left by an earlier process that had this process's id is replaced.
+    /// </summary>
+    private static SafeFileHandle CreateTemporary(string temp)
+    {
+        try
+        {
+            return File.OpenHandle(temp, FileMode.CreateNew, FileAccess.Write, FileShare.Read);
+        }
+        // ENOENT: the folder is missing. .NET names it a missing file instead when another thread created
+        // the folder between the failed open and the error's mapping, so both mean "make the folder".
+        catch (IOException e) when (e is DirectoryNotFoundException or FileNotFoundException)
+        {
+            var folder = Path.GetDirectoryName(temp)!;
+            var above = Path.GetDirectoryName(folder);
+            if (above is not null && !Directory.Exists(above))
+                throw new DirectoryNotFoundException($"folder {above} is gone (moved or deleted while this run wrote into it)");
+            Directory.CreateDirectory(folder);
+        }
+        catch (IOException) when (File.Exists(temp))
+        {
+            File.Delete(temp);
+        }
+        return File.OpenHandle(temp, FileMode.CreateNew, FileAccess.Write, FileShare.Read);
+    }
+
+    private static void TryDelete(string path)
+    {
+        try { if (File.Exists(path)) File.Delete(path); } catch (IOException) { } catch (UnauthorizedAccessException) { }
+    }
+}
