@@ -237,12 +237,16 @@ public static class ScaleSpecGenerator
             landblocks.Add(new LandblockSpec { Id = Hex(id), Objects = objects, Buildings = buildings });
         }
 
+        var (motionTables, animations) = ScaleMotions.Assign(setupSpecs[..doorCount], setupSpecs[doorCount..(doorCount + staticCount)],
+            setupSpecs[(doorCount + staticCount)..(doorCount + staticCount + creatureCount)], seed);
         return new ForgeSpec
         {
             Iteration = 1,
             Provenance = $"forge scale --setups {setups} --gfxobjs {totalGfx} --seed {seed}: synthetic geometry; door Setup ids from the ACE world database door list",
             GfxObjs = gfxObjs,
             Setups = setupSpecs,
+            MotionTables = motionTables,
+            Animations = animations,
             Landblocks = landblocks,
         };
     }

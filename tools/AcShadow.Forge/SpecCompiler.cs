@@ -31,6 +31,8 @@ public static class SpecCompiler
         var portal = new Dictionary<uint, byte[]>();
         for (var i = 0; i < gfxBytes.Length; i++) portal[spec.GfxObjs[i].Id] = gfxBytes[i];
         foreach (var setup in spec.Setups) portal[setup.Id] = Serialize(setup.Write);
+        foreach (var table in spec.MotionTables) portal[table.Id] = Serialize(table.Write);
+        foreach (var animation in spec.Animations) portal[animation.Id] = Serialize(animation.Write);
         var portalDat = DatArchiveWriter.Write(portal, new DatArchiveWriter.Options(DatFileKind.Portal, PortalBlockSize, spec.Iteration, RawDate));
 
         byte[]? cellDat = null;

@@ -29,10 +29,12 @@ public static class ChartCommand
         var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})", HelpName = "S" };
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
+        var pose = new PoseOptions();
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
         {
             setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, outDir, radius, spacing, scale, quiet,
         };
+        foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
             var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).ToArray();
@@ -48,12 +50,13 @@ public static class ChartCommand
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
-                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet));
+                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet),
+                pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Core.Shapes.ShapePolicy.Retail)));
         });
         return command;
     }
 
-    private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, ChartOptions options, float scale, bool quiet)
+    private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, ChartOptions options, float scale, bool quiet, Core.Shapes.ShapeBuildOptions pose)
     {
         var clock = Stopwatch.StartNew();
         if (File.Exists(outDir))
@@ -71,7 +74,7 @@ public static class ChartCommand
         var order = ids.Concat(planned?.Setups.Select(s => s.Id) ?? []).Distinct().ToArray();
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
 
-        var subjects = new ChartSubjects(dat.Portal);
+        var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
         // for by --setup has been read above, so it is decodable.
         var unreadable = new List<uint>();

@@ -1,6 +1,7 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 
 namespace AcShadow.Core.Batch;
@@ -81,6 +82,9 @@ public static class BatchIndexWriter
             .Add("cellDat", inputs.CellDat is { } cell ? Dat(cell) : JsonNull.Value)
             .Add("policy", inputs.Policy.Name())
             .Add("entityScale", inputs.EntityScale)
+            .Add("pose", inputs.Pose.Name())
+            .Add("doorState", inputs.DoorState.Name())
+            .Add("motionTable", inputs.MotionTable is { } table ? JsonIds.Format(table) : null)
             .Add("selection", new JsonObj()
                 .Add("doors", selection.Doors)
                 .Add("all", selection.All)

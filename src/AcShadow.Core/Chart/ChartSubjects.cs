@@ -2,6 +2,7 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Collision;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Shapes;
 
 namespace AcShadow.Core.Chart;
 
@@ -14,9 +15,13 @@ public sealed class ChartSubjects
 
     public CompiledBspCache Bsps { get; }
 
-    public ChartSubjects(IDatSource dat)
+    private readonly ShapeBuildOptions? _pose;
+
+    /// <param name="pose">The pose, door state and motion table every subject's parts take (default: the retail pose).</param>
+    public ChartSubjects(IDatSource dat, ShapeBuildOptions? pose = null)
     {
         _dat = dat;
+        _pose = pose;
         Bsps = new CompiledBspCache(id => GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
     }
 
@@ -39,9 +44,9 @@ public sealed class ChartSubjects
     /// (<see cref="Scenes.BareGfxObjShape"/>), or null when the dat has no such GfxObj.
     /// </summary>
     public ChartSubject? ForBareGfxObj(uint gfxObjId, float entityScale = 1f) =>
-        GfxObj(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), GfxObj, Bsps.Get, entityScale) : null;
+        GfxObj(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), GfxObj, Bsps.Get, entityScale) { Pose = _pose, Motions = _dat } : null;
 
     /// <summary>The subject for a Setup, or null when the dat has no such Setup.</summary>
     public ChartSubject? For(uint setupId, float entityScale = 1f) =>
-        _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, GfxObj, Bsps.Get, entityScale) : null;
+        _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, GfxObj, Bsps.Get, entityScale) { Pose = _pose, Motions = _dat } : null;
 }

@@ -6,6 +6,8 @@ public enum DatObjectKind
     GfxObj,
     Setup,
     LandBlockInfo,
+    MotionTable,
+    Animation,
 }
 
 public static class DatObjectKinds
@@ -15,6 +17,8 @@ public static class DatObjectKinds
         DatObjectKind.GfxObj => id is >= 0x01000000 and <= 0x0100FFFF,
         DatObjectKind.Setup => id is >= 0x02000000 and <= 0x0200FFFF,
         DatObjectKind.LandBlockInfo => (id & 0xFFFF) == 0xFFFE,
+        DatObjectKind.MotionTable => id is >= 0x09000000 and <= 0x0900FFFF,
+        DatObjectKind.Animation => id is >= 0x03000000 and <= 0x0300FFFF,
         _ => false,
     };
 
@@ -23,6 +27,8 @@ public static class DatObjectKinds
         DatObjectKind.GfxObj => "0x01000000-0x0100FFFF",
         DatObjectKind.Setup => "0x02000000-0x0200FFFF",
         DatObjectKind.LandBlockInfo => "0xXXYYFFFE",
+        DatObjectKind.MotionTable => "0x09000000-0x0900FFFF",
+        DatObjectKind.Animation => "0x03000000-0x0300FFFF",
         _ => "?",
     };
 }

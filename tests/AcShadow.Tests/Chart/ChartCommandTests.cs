@@ -38,7 +38,7 @@ public class ChartCommandTests
         {
             Assert.Contains($"failure-map-{id}.svg", dir.Files());
             var rows = File.ReadAllLines(Path.Combine(dir.Path, "chart.csv")).Count(l => l.StartsWith(id + ",", StringComparison.Ordinal));
-            Assert.Equal(5, rows);
+            Assert.Equal(6, rows);
         }
     }
 

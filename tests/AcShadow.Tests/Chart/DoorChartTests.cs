@@ -80,6 +80,6 @@ public class DoorChartTests
         Assert.Equal("retail", Door.CheapestExact);
         var chart = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "chart.csv").Content);
         Assert.Contains("0x020019FF,retail,3,", chart);
-        Assert.Equal(1 + 5, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
+        Assert.Equal(1 + 6, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
     }
 }

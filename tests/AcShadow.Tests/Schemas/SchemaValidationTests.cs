@@ -111,7 +111,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     }
 
     [Theory]
-    [InlineData("dump/setups/0x020019FF.shadow.json", "\"format\": \"acshadow.shadow/1\"", "\"format\": \"acshadow.shadow/2\"", "is not \"acshadow.shadow/1\"")]
+    [InlineData("dump/setups/0x020019FF.shadow.json", "\"format\": \"acshadow.shadow/2\"", "\"format\": \"acshadow.shadow/1\"", "is not \"acshadow.shadow/2\"")]
     [InlineData("dump/setups/0x020019FF.shadow.json", "\"collisionType\": \"bsp\"", "\"collisionType\": \"box\"", "is not one of")]
     [InlineData("dump/gfxobjs/0x010044B5.bsp.json", "\"gfxObjId\": \"0x010044B5\"", "\"gfxObjId\": \"0x10044B5\"", "does not match")]
     [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"NumPoints\": 4", "\"NumPoints\": \"4\"", "is not of type")]

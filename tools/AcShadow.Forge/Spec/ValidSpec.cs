@@ -8,7 +8,11 @@ public sealed record ValidSpec(
     int Iteration,
     IReadOnlyList<ForgeGfxObj> GfxObjs,
     IReadOnlyList<Setup> Setups,
-    IReadOnlyList<LandBlockInfo> Landblocks);
+    IReadOnlyList<LandBlockInfo> Landblocks)
+{
+    public IReadOnlyList<MotionTable> MotionTables { get; init; } = [];
+    public IReadOnlyList<Animation> Animations { get; init; } = [];
+}
 
 /// <summary>
 /// A GfxObj before its BSP is built. Polygon ids are the polygons' indices in the spec, so leaves,

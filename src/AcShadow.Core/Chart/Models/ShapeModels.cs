@@ -10,6 +10,7 @@ public static class ShapeModels
         new FallbackCylinderModel(),
         new SpheresModel(),
         new PartSpheresModel(),
+        new PlacementPoseModel(),
     ];
 
     public static IShapeModel? Find(string name) => All.FirstOrDefault(m => string.Equals(m.Name, name, StringComparison.OrdinalIgnoreCase));
