@@ -31,11 +31,11 @@ public class ChartOutputTests
         var files = ChartFiles.Render(report).ToDictionary(f => f.RelativePath, f => System.Text.Encoding.UTF8.GetString(f.Content));
         var chart = files["chart.csv"].Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal(ChartCsv.Header, chart[0]);
-        Assert.Equal(3 * 5, chart.Length - 1);
+        Assert.Equal(3 * 6, chart.Length - 1);
         Assert.All(chart.Skip(1), row => Assert.Equal(ChartCsv.Header.Split(',').Length, row.Split(',').Length));
         var summary = files["summary.csv"].Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal(SummaryCsv.Header, summary[0]);
-        Assert.Equal(["retail", "union", "fallback-cylinder", "spheres", "part-spheres"], summary.Skip(1).Select(r => r.Split(',')[0]));
+        Assert.Equal(["retail", "union", "fallback-cylinder", "spheres", "part-spheres", "placement-pose"], summary.Skip(1).Select(r => r.Split(',')[0]));
         Assert.StartsWith("retail,3,", summary[1]);
         Assert.All(files.Where(f => f.Key.EndsWith(".svg")), f => Assert.StartsWith("<svg xmlns=\"http://www.w3.org/2000/svg\"", f.Value));
     }
@@ -47,7 +47,7 @@ public class ChartOutputTests
     {
         var timer = new TableTimer(new Dictionary<string, double>
         {
-            ["retail"] = 100, ["union"] = unionNs, ["fallback-cylinder"] = 5, ["spheres"] = 5, ["part-spheres"] = 10,
+            ["retail"] = 100, ["union"] = unionNs, ["fallback-cylinder"] = 5, ["spheres"] = 5, ["part-spheres"] = 10, ["placement-pose"] = 100,
         });
         var report = ChartRunner.Run([SampleChart.Subjects.Value.For(0x020019FF)!], new ChartOptions(), timer: timer);
         Assert.Equal(expected, report.Objects.Single().CheapestExact);
