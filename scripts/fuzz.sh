@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz campaign: damaged copies of the built-in sample dats through `dump` and `batch` (issue 6).
+# Fuzz campaign: damaged copies of the built-in sample dats through `dump` and `batch`.
 # Usage: scripts/fuzz.sh [SEED] [CASES] [TIME_LIMIT_SECONDS]      (defaults: 1 50000 10)
 # Prints cases/second, the failures (if any) and the slowest case; saves each kind of failure,
 # minimised, under tests/AcShadow.Tests/Fuzz/Inputs/ so it becomes a regression test.

@@ -18,7 +18,7 @@ trap 'rm -rf "$staging"' EXIT
 "${acshadow[@]}" batch --doors --all --landblock 0xA9B4 --out "$staging" --quiet
 
 # Replace only what batch writes (fixtures/README.md stays).
-rm -rf fixtures/index.json fixtures/scene.json fixtures/setups fixtures/gfxobjs fixtures/scenes
+rm -rf fixtures/index.json fixtures/scene.json fixtures/setups fixtures/gfxobjs fixtures/cells fixtures/scenes
 mkdir -p fixtures
 cp -R "$staging"/. fixtures/
 "${acshadow[@]}" verify --fixtures fixtures

@@ -1,7 +1,7 @@
 using System.Text.Json;
-using AcShadow.Core.Batch;
-using AcShadow.Core.Json;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
 

@@ -1,19 +1,29 @@
 using System.Numerics;
 using System.Text.Json;
-using AcShadow.Core.Json;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
 
 /// <summary>One object scene.json places: what it is, where it stands in the world, and the file that describes it.</summary>
+/// <param name="Index">Its position in the landblock's placement list.</param>
+/// <param name="Id">The Setup (0x02…) or GfxObj (0x01…) id it places.</param>
 /// <param name="Kind">"setup", "gfxObj" or "other".</param>
+/// <param name="WorldPosition">Its origin in world coordinates (metres).</param>
+/// <param name="WorldRotation">Its orientation in the world.</param>
 /// <param name="File">Output-relative path of its shadow file (setup) or BSP dump (gfxObj); null when unresolved or drawing-only.</param>
 /// <param name="Shapes">A bare GfxObj's one BSP shape (empty for setups, whose shapes are in their shadow file).</param>
 public sealed record ScenePlacement(int Index, uint Id, string Kind, Vector3 WorldPosition, Quaternion WorldRotation, string? File, IReadOnlyList<ShadowShape> Shapes);
 
-/// <summary>scene.json read back: a landblock's placed objects in world frames.</summary>
+/// <summary>One indoor cell scene.json lists: its id and its cell file (null when it could not be described).</summary>
+public sealed record SceneCell(uint Id, string? File);
+
+/// <summary>scene.json read back: a landblock's placed objects in world frames, and its indoor cells.</summary>
 public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePolicy Policy, float EntityScale, IReadOnlyList<ScenePlacement> Objects)
 {
+    /// <summary>The landblock's EnvCells (empty when the batch ran with --no-cells or the landblock has none).</summary>
+    public IReadOnlyList<SceneCell> Cells { get; init; } = [];
+
     public static FixtureScene Read(string json)
     {
         using var doc = JsonDocument.Parse(json);
@@ -30,8 +40,15 @@ public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePo
                 BspFileReader.Vec(BspFileReader.Prop(frame, "origin")), BspFileReader.Quat(BspFileReader.Prop(frame, "orientation")),
                 file.ValueKind == JsonValueKind.Null ? null : file.GetString(), shapes);
         }).ToArray();
+        var cells = root.TryGetProperty("cells", out var c)
+            ? c.EnumerateArray().Select(e =>
+            {
+                var file = BspFileReader.Prop(e, "file");
+                return new SceneCell(Id(e, "id"), file.ValueKind == JsonValueKind.Null ? null : file.GetString());
+            }).ToArray()
+            : [];
         return new FixtureScene(Id(root, "landblockId"), BspFileReader.Vec(BspFileReader.Prop(root, "worldOrigin")), policy,
-            BspFileReader.Float(root, "entityScale"), objects);
+            BspFileReader.Float(root, "entityScale"), objects) { Cells = cells };
     }
 
     private static uint Id(JsonElement e, string name) =>

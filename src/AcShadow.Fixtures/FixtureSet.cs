@@ -1,5 +1,5 @@
-using AcShadow.Core.Json;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
 
@@ -10,6 +10,7 @@ namespace AcShadow.Fixtures;
 public sealed class FixtureSet
 {
     private readonly Dictionary<uint, SetupFixture> _setups = [];
+    private readonly Dictionary<uint, CellFixture> _cells = [];
     private readonly Lock _lock = new();
     private readonly Lazy<FixtureIndex?> _index;
     private readonly Lazy<FixtureScene?> _scene;
@@ -43,6 +44,39 @@ public sealed class FixtureSet
         }
     }
 
+    /// <summary>An indoor cell's fixture (<c>cells/0x%08X.cell.json</c>), loaded once.</summary>
+    public CellFixture Cell(uint cellId)
+    {
+        lock (_lock)
+        {
+            if (!_cells.TryGetValue(cellId, out var fixture))
+                _cells[cellId] = fixture = CellFixture.Load(Folder, cellId);
+            return fixture;
+        }
+    }
+
+    /// <summary>Every cell scene.json lists with a file: the landblock's interior.</summary>
+    public IReadOnlyList<CellFixture> SceneCells()
+    {
+        var scene = Scene ?? throw new FileNotFoundException($"{Path.Combine(Folder, "scene.json")} is missing; generate it with `acshadow batch --landblock 0xXXYY --cell-dat PATH --out {Folder}`");
+        return scene.Cells.Where(c => c.File is not null).Select(c => Cell(c.Id)).ToArray();
+    }
+
+    /// <summary>
+    /// The objects placed inside a cell, each at its landblock-relative frame (the frame
+    /// <see cref="CellFixture.Overlaps"/> takes), so a query can ask the cell and its contents alike.
+    /// </summary>
+    public IReadOnlyList<PlacedFixture> PlaceCellObjects(CellFixture cell)
+    {
+        var policy = Scene?.Policy ?? Index?.Policy ?? ShapePolicy.Retail;
+        var scale = Scene?.EntityScale ?? Index?.EntityScale ?? 1f;
+        return cell.File.Objects.Where(o => o.File is not null).Select(o =>
+        {
+            var fixture = o.Kind == "setup" ? Setup(o.Id) : BareGfxObj(o.Id, o.File!, o.Shapes, policy, scale);
+            return fixture.PlaceAt(o.LandblockPosition, o.Rotation);
+        }).ToArray();
+    }
+
     /// <summary>Every object of scene.json that has a file, placed at its world frame.</summary>
     public IReadOnlyList<PlacedFixture> PlaceScene()
     {
@@ -56,11 +90,13 @@ public sealed class FixtureSet
         return placed;
     }
 
-    private SetupFixture GfxObj(FixtureScene scene, ScenePlacement o)
+    private SetupFixture GfxObj(FixtureScene scene, ScenePlacement o) => BareGfxObj(o.Id, o.File!, o.Shapes, scene.Policy, scene.EntityScale);
+
+    private SetupFixture BareGfxObj(uint id, string file, IReadOnlyList<ShadowShape> shapes, ShapePolicy policy, float entityScale)
     {
-        var dump = BspFileReader.Read(File.ReadAllText(Path.Combine(Folder, o.File!)));
-        var set = new ShadowShapeSet(o.Id, scene.Policy, new PlacementResolution(PlacementResolution.NoneName, PlacementResolution.NoneName),
-            scene.EntityScale, true, o.Shapes, []);
+        var dump = BspFileReader.Read(File.ReadAllText(Path.Combine(Folder, file)));
+        var set = new ShadowShapeSet(id, policy, new PlacementResolution(PlacementResolution.NoneName, PlacementResolution.NoneName),
+            entityScale, true, shapes, []);
         return SetupFixture.From(set, [dump]);
     }
 

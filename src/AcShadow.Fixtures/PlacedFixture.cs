@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Fixtures;
 

@@ -1,8 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Json;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
 

@@ -1,6 +1,7 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 using BenchmarkDotNet.Attributes;
 
 namespace AcShadow.Bench;

@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Collision;
 using BenchmarkDotNet.Attributes;
 
 namespace AcShadow.Bench;

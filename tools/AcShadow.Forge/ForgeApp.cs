@@ -99,12 +99,12 @@ public static class ForgeApp
     {
         var portalPath = Path.Combine(dir, PortalFileName);
         AtomicFile.Write(portalPath, dats.Portal);
-        stdout.WriteLine($"wrote {portalPath} ({dats.Portal.Length} bytes; {dats.GfxObjCount} GfxObjs, {dats.SetupCount} Setups)");
+        stdout.WriteLine($"wrote {portalPath} ({dats.Portal.Length} bytes; {dats.GfxObjCount} GfxObjs, {dats.SetupCount} Setups{(dats.EnvironmentCount > 0 ? $", {dats.EnvironmentCount} Environments" : "")})");
         if (dats.Cell is { } cell)
         {
             var cellPath = Path.Combine(dir, CellFileName);
             AtomicFile.Write(cellPath, cell);
-            stdout.WriteLine($"wrote {cellPath} ({cell.Length} bytes; {dats.LandblockCount} LandBlockInfos)");
+            stdout.WriteLine($"wrote {cellPath} ({cell.Length} bytes; {dats.LandblockCount} LandBlockInfos{(dats.EnvCellCount > 0 ? $", {dats.EnvCellCount} EnvCells" : "")})");
         }
     }
 

@@ -1,4 +1,6 @@
 using System.Numerics;
+using System.Text.Json;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
 
@@ -22,6 +24,9 @@ public static class SampleSpecAuthor
     public const uint BuildingSetup = 0x02005000, House = 0x01005000;
     public const uint OddSetup = 0x02006000, OddGfxObj = 0x01006000;
     public const uint Landblock = 0xA9B4FFFE;
+    public const uint CottageEnvironment = 0x0D000100, GroundFloorCell = 0xA9B40100, CellarCell = 0xA9B40101;
+    /// <summary>Where both cottage cells sit in the landblock: one origin, turned 90° about Z.</summary>
+    public static readonly Vector3 CottageOrigin = new(60, 60, 12);
 
     // Motion: door tables use the ids the door catalog names for these door Setups.
     public const uint DoorMotionTable = 0x09000202, DoorClosedAnim = 0x03000100, DoorOpenAnim = 0x03000101, DoorSwingAnim = 0x03000102;
@@ -117,6 +122,8 @@ public static class SampleSpecAuthor
                 Radius = 0.17,
                 Height = 0.24,
                 Flags = ["HasPhysicsBsp"],
+                // Every hook type the public readers define, so the placement frames are read as real ones are.
+                Hooks = new Dictionary<string, IReadOnlyList<HookSpec>?> { ["Default"] = OpeningHooks(), ["Resting"] = ClosingHooks() },
             },
             new SetupSpec
             {
@@ -342,13 +349,150 @@ public static class SampleSpecAuthor
                     new StabSpec { Id = Hex(StaticSetup), Origin = [100, 30, 11], Orientation = Z(-45) },
                 ],
                 Buildings = [new BuildingSpec { ModelId = Hex(House), Origin = [132, 108, 12], Orientation = Z(90), NumLeaves = 4 }],
+                Cells =
+                [
+                    new CellSpec
+                    {
+                        Comment = "cottage ground floor: door to the outside in its front wall (portal 0), stairwell down to the cellar (portal 1), the L-block Setup inside",
+                        Environment = Hex(CottageEnvironment),
+                        CellStruct = 0,
+                        Origin = [CottageOrigin.X, CottageOrigin.Y, CottageOrigin.Z],
+                        Orientation = Z(90),
+                        SeenOutside = true,
+                        Portals =
+                        [
+                            new CellPortalSpec { Polygon = 0, OtherCell = "outside", Flags = "PortalSide" },
+                            new CellPortalSpec { Polygon = 1, OtherCell = "0x0101", OtherPortal = 0, Flags = "ExactMatch" },
+                        ],
+                        VisibleCells = ["0x0101"],
+                        // Cell-local (-2.5, -2, 0), turned with the cell: landblock (60 + 2, 60 - 2.5, 12).
+                        Objects = [new StabSpec { Id = Hex(NoPlacementSetup), Origin = [62, 57.5, 12], Orientation = Z(90) }],
+                    },
+                    new CellSpec
+                    {
+                        Comment = "cottage cellar, 3 m below, reached by the ramp under the stairwell (portal 0 up to the ground floor)",
+                        Environment = Hex(CottageEnvironment),
+                        CellStruct = 1,
+                        Origin = [CottageOrigin.X, CottageOrigin.Y, CottageOrigin.Z],
+                        Orientation = Z(90),
+                        Portals = [new CellPortalSpec { Polygon = 0, OtherCell = "0x0100", OtherPortal = 1, Flags = "ExactMatch" }],
+                        VisibleCells = ["0x0100"],
+                    },
+                ],
+            },
+        ],
+        Environments =
+        [
+            new EnvironmentSpec
+            {
+                Id = Hex(CottageEnvironment),
+                Comment = "a cottage's two cell shapes, in one cell-local frame (x across, y deep, z up; the front wall at y = -2.5)",
+                CellStructs = [GroundFloor(), Cellar()],
             },
         ],
     };
 
+    /// <summary>
+    /// The ground floor, 6 x 5 m (x in [-3, 3], y in [-2.5, 2.5]): walls face into the room; the front
+    /// wall (y = -2.5, 3 m tall) has a 2 x 2.2 m door; the ceiling is one tilted polygon rising from 3 m at
+    /// the front to 3.5 m at the back; the floor leaves a 4 x 1.5 m stairwell (x in [-1, 3], y in [1, 2.5]).
+    /// Portals: the door, then the stairwell.
+    /// </summary>
+    private static CellStructSpec GroundFloor()
+    {
+        var m = new MeshBuilder();
+        m.Polygon([new(-3, -2.5f, 0), new(3, -2.5f, 0), new(3, 1, 0), new(-3, 1, 0)]);                 // floor before the stairwell
+        m.Polygon([new(-3, 1, 0), new(-1, 1, 0), new(-1, 2.5f, 0), new(-3, 2.5f, 0)]);                  // floor beside it
+        m.Polygon([new(-3, 2.5f, 0), new(3, 2.5f, 0), new(3, 2.5f, 3.5f), new(-3, 2.5f, 3.5f)]);         // back wall
+        m.Polygon([new(3, -2.5f, 0), new(3, -2.5f, 3), new(3, 2.5f, 3.5f), new(3, 2.5f, 0)]);            // right wall
+        m.Polygon([new(-3, -2.5f, 0), new(-3, 2.5f, 0), new(-3, 2.5f, 3.5f), new(-3, -2.5f, 3)]);        // left wall
+        m.Polygon([new(-3, -2.5f, 0), new(-3, -2.5f, 3), new(-1, -2.5f, 3), new(-1, -2.5f, 0)]);         // front wall, left of the door
+        m.Polygon([new(1, -2.5f, 0), new(1, -2.5f, 3), new(3, -2.5f, 3), new(3, -2.5f, 0)]);             // front wall, right of the door
+        m.Polygon([new(-1, -2.5f, 2.2f), new(-1, -2.5f, 3), new(1, -2.5f, 3), new(1, -2.5f, 2.2f)]);     // above the door
+        m.Polygon([new(-3, -2.5f, 3), new(-3, 2.5f, 3.5f), new(3, 2.5f, 3.5f), new(3, -2.5f, 3)]);       // tilted ceiling
+        var walls = m.PolygonCount;
+        m.Polygon([new(-1, -2.5f, 0), new(1, -2.5f, 0), new(1, -2.5f, 2.2f), new(-1, -2.5f, 2.2f)]);     // portal 0: the door
+        m.Polygon([new(-1, 1, 0), new(3, 1, 0), new(3, 2.5f, 0), new(-1, 2.5f, 0)]);                     // portal 1: the stairwell
+        return m.ToCellStructSpec(walls, "ground floor: 2 floor pieces, 3 walls, the front wall in 3 pieces around the door, a tilted ceiling; portals: door, stairwell");
+    }
+
+    /// <summary>
+    /// The cellar below (z in [-3, 0]): floor, four walls, the ceiling around the stairwell, and a ramp
+    /// under the stairwell from the floor at x = -1 up to z = 0 at the back-right wall (slope 3 in 4, normal
+    /// (-0.6, 0, 0.8): walkable), closed on its open side by a triangle. Portal: the stairwell.
+    /// </summary>
+    private static CellStructSpec Cellar()
+    {
+        var m = new MeshBuilder();
+        m.Polygon([new(-3, -2.5f, -3), new(3, -2.5f, -3), new(3, 2.5f, -3), new(-3, 2.5f, -3)]);        // floor
+        m.Polygon([new(-3, 2.5f, -3), new(3, 2.5f, -3), new(3, 2.5f, 0), new(-3, 2.5f, 0)]);            // back wall
+        m.Polygon([new(-3, -2.5f, -3), new(-3, -2.5f, 0), new(3, -2.5f, 0), new(3, -2.5f, -3)]);        // front wall
+        m.Polygon([new(3, -2.5f, -3), new(3, -2.5f, 0), new(3, 2.5f, 0), new(3, 2.5f, -3)]);            // right wall
+        m.Polygon([new(-3, -2.5f, -3), new(-3, 2.5f, -3), new(-3, 2.5f, 0), new(-3, -2.5f, 0)]);        // left wall
+        m.Polygon([new(-3, -2.5f, 0), new(-3, 1, 0), new(3, 1, 0), new(3, -2.5f, 0)]);                 // ceiling before the stairwell
+        m.Polygon([new(-3, 1, 0), new(-3, 2.5f, 0), new(-1, 2.5f, 0), new(-1, 1, 0)]);                  // ceiling beside it
+        m.Polygon([new(-1, 1, -3), new(3, 1, 0), new(3, 2.5f, 0), new(-1, 2.5f, -3)]);                  // ramp
+        m.Polygon([new(-1, 1, -3), new(3, 1, -3), new(3, 1, 0)]);                                        // ramp's side
+        var walls = m.PolygonCount;
+        m.Polygon([new(-1, 1, 0), new(-1, 2.5f, 0), new(3, 2.5f, 0), new(3, 1, 0)]);                     // portal 0: the stairwell
+        return m.ToCellStructSpec(walls, "cellar: floor, 4 walls, ceiling in 2 pieces, ramp and its side; portal: stairwell");
+    }
+
     private static string Hex(uint id) => $"0x{id:X8}";
 
     private static AnimDataSpec Anim(uint id, double framerate = 30) => new() { Anim = Hex(id), Framerate = framerate };
+    /// <summary>
+    /// Half of the hook types, with values a reader can get wrong: part indexes above 255, ReplaceObject ids in
+    /// the short (offset up to 0x7FFF) and long packed forms, every direction. NoOp is left out: neither public
+    /// reader can read past one.
+    /// </summary>
+    private static IReadOnlyList<HookSpec> OpeningHooks() =>
+    [
+        Hook("Sound", null, """{"soundId": "0x0A000123"}"""),
+        Hook("SoundTable", null, """{"soundType": 7}"""),
+        Hook("Attack", "Both", """{"partIndex": 300, "leftX": -0.5, "leftY": 1, "rightX": 0.5, "rightY": 1, "radius": 1.25, "height": 2}"""),
+        Hook("AnimationDone", null),
+        Hook("ReplaceObject", null, """{"partIndex": 300, "gfxObjId": "0x01000B21"}"""),
+        Hook("ReplaceObject", "Backward", """{"partIndex": 2, "gfxObjId": "0x0100C0DE"}"""),
+        Hook("Ethereal", null, """{"ethereal": true}"""),
+        Hook("TransparentPart", null, """{"partIndex": 1, "start": 0, "end": 0.5, "time": 1.5}"""),
+        Hook("Luminous", "Both", """{"start": 0, "end": 1, "time": 0.25}"""),
+        Hook("LuminousPart", null, """{"partIndex": 257, "start": 1, "end": 0, "time": 2}"""),
+        Hook("Diffuse", "Backward", """{"start": 0.5, "end": 1, "time": 3}"""),
+        Hook("DiffusePart", null, """{"partIndex": 3, "start": 0.25, "end": 0.75, "time": 1}"""),
+        Hook("Scale", null, """{"end": 1.5, "time": 0.5}"""),
+        Hook("CreateParticle", null, """{"emitterInfoId": "0x32000010", "partIndex": 0, "offset": {"origin": [0.5, 0, 1], "orientation": {"w": 0.70710677, "x": 0, "y": 0, "z": 0.70710677}}, "emitterId": 7}"""),
+    ];
+
+    /// <summary>The other half, and a long-form ReplaceObject at the smallest long offset (0x8000) last before the CylSpheres.</summary>
+    private static IReadOnlyList<HookSpec> ClosingHooks() =>
+    [
+        Hook("DestroyParticle", null, """{"emitterId": 7}"""),
+        Hook("StopParticle", "Both", """{"emitterId": 8}"""),
+        Hook("NoDraw", null, """{"noDraw": false}"""),
+        Hook("DefaultScript", null),
+        Hook("DefaultScriptPart", null, """{"partIndex": 511}"""),
+        Hook("CallPES", null, """{"scriptId": "0x33000005", "pause": 0.5}"""),
+        Hook("Transparent", "Backward", """{"start": 1, "end": 0, "time": 0.75}"""),
+        Hook("SoundTweaked", null, """{"soundId": "0x0A000200", "priority": 0.5, "probability": 0.25, "volume": 0.8}"""),
+        Hook("SetOmega", "Both", """{"axis": [0, 0, 1.5]}"""),
+        Hook("TextureVelocity", null, """{"uSpeed": 0.5, "vSpeed": -1}"""),
+        Hook("TextureVelocityPart", null, """{"partIndex": 300, "uSpeed": 0.25, "vSpeed": 0}"""),
+        Hook("SetLight", null, """{"lightsOn": true}"""),
+        Hook("CreateBlockingParticle", null, """{"emitterInfoId": "0x32000011", "partIndex": 1, "offset": {"origin": [0, 0, 0.5], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}}, "emitterId": 9}"""),
+        Hook("ReplaceObject", null, """{"partIndex": 0, "gfxObjId": "0x01008000"}"""),
+    ];
+
+    private static HookSpec Hook(string type, string? direction, string fields = "{}")
+    {
+        using var document = JsonDocument.Parse(fields);
+        return new HookSpec
+        {
+            Type = type,
+            Direction = direction,
+            Fields = document.RootElement.EnumerateObject().ToDictionary(p => p.Name, p => p.Value.Clone()),
+        };
+    }
 
     private static IReadOnlyDictionary<string, IReadOnlyList<FrameSpec>?> Place(params (string Name, FrameSpec[] Frames)[] placements) =>
         placements.ToDictionary(p => p.Name, p => (IReadOnlyList<FrameSpec>?)p.Frames);

@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using AcShadow.Cli;
+using AcShadow.Cli.Infrastructure;
 
 namespace AcShadow.Fuzz;
 

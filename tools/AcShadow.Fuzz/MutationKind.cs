@@ -1,6 +1,6 @@
 namespace AcShadow.Fuzz;
 
-/// <summary>The ways a case damages a dat (issue 6: "bit flips, byte runs, truncation at every block
+/// <summary>The ways a case damages a dat ("bit flips, byte runs, truncation at every block
 /// boundary, zeroed blocks, shuffled blocks, header fields at their limits").</summary>
 public enum MutationKind
 {

@@ -1,4 +1,5 @@
 using System.Globalization;
+using AcShadow.Fixtures.Cells;
 
 namespace AcShadow.Fuzz;
 

@@ -39,7 +39,7 @@ public static class AuditCommand
         {
             var query = new AuditQuery(parse.GetValue(onlyBsp), parse.GetValue(flagMismatch),
                 ParseCoverage(parse.GetValue(maxCoverage)), ParseSort(parse.GetValue(sort))) { PoseDiffers = parse.GetValue(poseDiffers) };
-            var poseOptions = pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Core.Shapes.ShapePolicy.Retail));
+            var poseOptions = pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail));
             var output = parse.GetValue(outFile);
             return Run(console, selection.Parse(parse, defaultToAll: true), parse.GetValue(dat), parse.GetValue(selection.CellDat),
                 query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)), parse.GetValue(chart), poseOptions);

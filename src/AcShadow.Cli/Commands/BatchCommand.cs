@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
@@ -10,6 +11,7 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 
@@ -31,14 +33,16 @@ public static class BatchCommand
         var incremental = new Option<bool>("--incremental") { Description = "skip Setups whose dat bytes (and their parts') did not change since the last --incremental run into DIR, and leave files whose content would not change untouched" };
         var format = FormatOption.Create();
         var pose = new PoseOptions();
+        var cells = new Option<bool>("--cells") { Description = "with --landblock: also write its indoor cells (the default)" };
+        var noCells = new Option<bool>("--no-cells") { Description = "with --landblock: objects only, no indoor cells" };
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
         {
             outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            policy, scale, jobs, quiet, incremental, format,
+            cells, noCells, policy, scale, jobs, quiet, incremental, format,
         };
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse => Run(console,
-            selection.Parse(parse, defaultToAll: false),
+            WithCells(selection.Parse(parse, defaultToAll: false), parse.GetValue(cells), parse.GetValue(noCells)),
             parse.GetValue(dat),
             parse.GetValue(selection.CellDat),
             parse.GetValue(outDir)!,
@@ -48,6 +52,13 @@ public static class BatchCommand
             parse.GetValue(incremental),
             FormatOption.Parse(parse.GetValue(format))));
         return command;
+    }
+
+    private static BatchSelection WithCells(BatchSelection selection, bool cells, bool noCells)
+    {
+        if (cells && noCells) throw new CliException(ExitCodes.Usage, "--cells and --no-cells contradict each other: give one");
+        if ((cells || noCells) && selection.Landblock is null) throw new CliException(ExitCodes.Usage, $"{(cells ? "--cells" : "--no-cells")} applies to a landblock's scene: add --landblock 0xXXYY");
+        return selection with { Cells = !noCells };
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
@@ -120,7 +131,7 @@ public static class BatchCommand
         var o = console.Out;
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, {options.Pose.Name()} pose, scale {options.EntityScale}): " +
-            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s)"));
+            $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s){(result.Cells > 0 ? $", {result.Cells} cell(s)" : "")}"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
@@ -159,6 +170,7 @@ public static class BatchCommand
                     candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
             }
         if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
+        foreach (var cell in plan.Scene?.Cells ?? []) Consider(Fixtures.Cells.CellFileFormat.PathFor(cell.Id), Fixtures.Cells.CellFileFormat.Format);
         Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
         OutputFolder.RefuseForeignFiles(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);

@@ -4,10 +4,11 @@ using System.Globalization;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Output;
+using AcShadow.Core.Chart;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
 
@@ -51,7 +52,7 @@ public static class ChartCommand
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
                 ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet),
-                pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Core.Shapes.ShapePolicy.Retail)));
+                pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail)));
         });
         return command;
     }

@@ -1,38 +1,97 @@
 using System.CommandLine;
 using System.Diagnostics;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Cells;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Commands;
 
-/// <summary>`acshadow dump --setup ID`: one Setup's shadow file and the BSP dumps its shapes reference.</summary>
+/// <summary>
+/// `acshadow dump --setup ID`: one Setup's shadow file and the BSP dumps its shapes reference.
+/// `acshadow dump --cell ID`: one indoor cell's file, with the files of the objects placed in it.
+/// </summary>
 public static class DumpCommand
 {
     public const string DefaultOut = "acshadow-out";
 
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string>("--setup") { Description = "Setup id, e.g. 0x020019FF", HelpName = "ID", Required = true };
+        var setup = new Option<string?>("--setup") { Description = "Setup id, e.g. 0x020019FF", HelpName = "ID" };
+        var cell = new Option<string?>("--cell") { Description = "an indoor cell (EnvCell) id instead, e.g. 0xA9B40100 (needs the cell dat)", HelpName = "ID" };
+        var cellDat = new Option<string?>("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --cell", HelpName = "PATH" };
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DefaultOut);
         var policy = CommonOptions.Policy();
         var scale = CommonOptions.Scale();
         var format = FormatOption.Create();
         var pose = new PoseOptions();
-        var command = new Command("dump", "Write one Setup's ShadowShape JSON and the BSP polygon dumps its shapes use")
+        var command = new Command("dump", "Write one Setup's ShadowShape JSON and the BSP polygon dumps its shapes use (or one indoor cell's file)")
         {
-            setup, dat, outDir, policy, scale, format,
+            setup, cell, dat, cellDat, outDir, policy, scale, format,
         };
         foreach (var option in pose.All) command.Options.Add(option);
-        command.SetAction(parse => Run(console,
-            ArgumentParsing.SetupId(parse.GetValue(setup)!),
-            parse.GetValue(dat),
-            parse.GetValue(outDir)!,
-            pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale)))),
-            FormatOption.Parse(parse.GetValue(format))));
+        command.SetAction(parse =>
+        {
+            var options = pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))));
+            var formats = FormatOption.Parse(parse.GetValue(format));
+            var (setupText, cellText) = (parse.GetValue(setup), parse.GetValue(cell));
+            if ((setupText is null) == (cellText is null))
+                throw new CliException(ExitCodes.Usage, "dump: give exactly one of --setup ID and --cell ID");
+            return setupText is not null
+                ? Run(console, ArgumentParsing.SetupId(setupText), parse.GetValue(dat), parse.GetValue(outDir)!, options, formats)
+                : RunCell(console, CellId(cellText!), parse.GetValue(dat), parse.GetValue(cellDat), parse.GetValue(outDir)!, options, formats);
+        });
         return command;
+    }
+
+    private static uint CellId(string text)
+    {
+        if (!JsonIds.TryParse(text, out var id))
+            throw new CliException(ExitCodes.Usage, $"--cell: '{text}' is not a cell id: write it in hex, e.g. 0xA9B40100");
+        if (!DatObjectKind.EnvCell.Contains(id))
+            throw new CliException(ExitCodes.Usage, $"--cell: 0x{id:X8} is not an indoor cell id: indoor cells are {DatObjectKind.EnvCell.RangeText()} (0xXXYY0001-0xXXYY0040 are outdoor land cells, which have no EnvCell)");
+        return id;
+    }
+
+    /// <summary>The cell's file, and the shadow files and BSP dumps of what is placed inside it, so its references resolve.</summary>
+    private static int RunCell(CliConsole console, uint cellId, string? datPath, string? cellDatPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
+    {
+        var clock = Stopwatch.StartNew();
+        using var dat = DatLocator.Open(datPath, cellDatPath, console);
+        var cells = dat.Cell ?? throw new CliException(ExitCodes.Usage, $"--cell {JsonIds.Format(cellId)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
+        var envCell = cells.ReadEnvCell(cellId)
+            ?? throw new CliException(ExitCodes.NotInDat, $"EnvCell {JsonIds.Format(cellId)} is not in {cells.Info.FileName}: check the id (a landblock's cells are 0xXXYY0100 up to its LandBlockInfo's cell count)");
+        var engine = new ExportEngine(dat.Portal, options);
+        var files = new List<OutputFile>();
+        var setupFiles = new Dictionary<uint, string>();
+        var problems = new Dictionary<uint, string>();
+        foreach (var id in envCell.StaticObjects.Select(s => s.Id).Where(id => DatObjectKind.Setup.Contains(id)).Distinct().Order())
+        {
+            var export = engine.ExportSetup(id);
+            if (export is null) { problems[id] = SkippedItem.NotInDat; continue; }
+            files.AddRange(export.Files);
+            setupFiles[id] = ShadowFileFormat.PathFor(id);
+        }
+        var scene = new LandblockScene((cellId & 0xFFFF0000u) | 0xFFFE, []);
+        var cellExport = new CellExporter(engine).Export(envCell, scene, setupFiles, problems);
+        var cellFile = cellExport.File
+            ?? throw new CliException(ExitCodes.NotInDat, cellExport.Diagnostics[0].Message);
+        DiagnosticPrinter.Print(console.Error, JsonIds.Format(cellId), cellExport.Diagnostics);
+        files.Add(cellFile);
+        files.AddRange(cellExport.BspFiles);
+        var bytes = Write(console, outDir, OutputFormatSelection.Apply(files.DistinctBy(f => f.RelativePath), formats).ToArray());
+        console.Out.WriteLine(
+            $"dump {JsonIds.Format(cellId)}: cell structure {envCell.CellStructure} of {JsonIds.Format(envCell.EnvironmentFileId)}, {cellFile.PolygonCount} physics polygon(s), " +
+            $"{envCell.Portals.Count} portal(s), {envCell.StaticObjects.Count} object(s) inside{(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, " +
+            $"{cellExport.Diagnostics.Count} diagnostic(s), {bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
+        return ExitCodes.Ok;
     }
 
     private static int Run(CliConsole console, uint setupId, string? datPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
@@ -44,7 +103,17 @@ public static class DumpCommand
             ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(setupId)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
 
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(setupId), export.Diagnostics);
-        var files = OutputFormatSelection.Apply(export.Files, formats).ToArray();
+        var bytes = Write(console, outDir, OutputFormatSelection.Apply(export.Files, formats).ToArray());
+        var set = export.Set;
+        console.Out.WriteLine(
+            $"dump {JsonIds.Format(setupId)}: {set.Shapes.Count} shape(s) under {set.Policy.Name()} " +
+            $"({PoseSummary.Describe(set)}), {export.BspFiles.Count} BSP dump(s){(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, {export.Diagnostics.Count} diagnostic(s), " +
+            $"{bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
+        return ExitCodes.Ok;
+    }
+
+    private static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
+    {
         OutputFolder.Prepare(outDir);
         OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.RelativePath, f.Content)));
         long bytes = 0;
@@ -61,11 +130,6 @@ public static class DumpCommand
             }
             bytes += file.Content.Length;
         }
-        var set = export.Set;
-        console.Out.WriteLine(
-            $"dump {JsonIds.Format(setupId)}: {set.Shapes.Count} shape(s) under {set.Policy.Name()} " +
-            $"({PoseSummary.Describe(set)}), {export.BspFiles.Count} BSP dump(s){(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, {export.Diagnostics.Count} diagnostic(s), " +
-            $"{bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
-        return ExitCodes.Ok;
+        return bytes;
     }
 }

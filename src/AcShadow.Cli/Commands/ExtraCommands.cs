@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcShadow.Cli.Infrastructure;
 
 namespace AcShadow.Cli.Commands;
 
@@ -11,6 +12,8 @@ public static class ExtraCommands
         yield return AuditCommand.Create(console);
         yield return VerifyCommand.Create(console);
         yield return ChartCommand.Create(console);
+        yield return ViewCommand.Create(console);
+        yield return DoctorCommand.Create(console);
         yield return FormatsCommand.Create(console);
         yield return CompletionsCommand.Create(console);
     }

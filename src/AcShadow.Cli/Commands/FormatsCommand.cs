@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcShadow.Cli.Infrastructure;
 using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;
@@ -21,7 +22,7 @@ public static class FormatsCommand
             foreach (var f in FileFormats.All) o.WriteLine($"{f.Format}: {f.Description}");
             o.WriteLine();
             o.WriteLine("Schemas: schemas/*.schema.json in the repository (and in the AcShadow.Fixtures package); description: docs/formats.md.");
-            o.WriteLine("acdream.gfxobj files carry no format field: acdream fixes their fields. Every other file's \"format\" names its version.");
+            o.WriteLine("acdream.gfxobj and acdream.cell files carry no format field: acdream fixes their fields. Every other file's \"format\" names its version.");
             return 0;
         });
         return command;

@@ -20,6 +20,7 @@ public static class CommandExamples
             "acshadow dump --setup 0x020019FF",
             "acshadow dump --setup 0x020019FF --dat ~/ac/client_portal.dat --out my-fixtures --format both",
             "acshadow dump --setup 0x020019FF --policy union --out union-door",
+            "acshadow dump --cell 0xA9B40100 --out cottage --format both",
             "acshadow @dump-door.rsp",
         ],
         ["batch"] =
@@ -27,6 +28,7 @@ public static class CommandExamples
             "acshadow batch --doors --all --landblock 0xA9B4 --out my-fixtures",
             "acshadow batch --doors --out door-fixtures --format acdream --jobs 4",
             "acshadow batch --setups ids.txt --out fixtures --incremental --quiet",
+            "acshadow batch --landblock 0xA9B4 --no-cells --out outdoors",
         ],
         ["audit"] =
         [
@@ -43,6 +45,17 @@ public static class CommandExamples
         [
             "acshadow chart --setup 0x020019FF --out chart-door",
             "acshadow chart --doors --out chart-doors --probe-radius 0.5 --spacing 0.25",
+        ],
+        ["view"] =
+        [
+            "acshadow view --setup 0x020019FF --out v",
+            "acshadow view --fixtures fixtures --out v",
+            "acshadow view --setup 0x020019FF --chart chart-door --out v",
+        ],
+        ["doctor"] =
+        [
+            "acshadow doctor",
+            "acshadow doctor --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out doctor.json",
         ],
         ["formats"] =
         [

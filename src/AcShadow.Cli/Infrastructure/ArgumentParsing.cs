@@ -3,6 +3,8 @@ using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Infrastructure;
 

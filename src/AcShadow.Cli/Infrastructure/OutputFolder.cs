@@ -192,7 +192,7 @@ public static class OutputFolder
         Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
 
     /// <summary>The kinds of file a run writes into a folder (and its write test): a user's "notes.2023.tmp" is not one.</summary>
-    private static readonly string[] OutputExtensions = [".json", ".csv", ".svg", WriteTestName];
+    private static readonly string[] OutputExtensions = [".json", ".csv", ".svg", ".glb", WriteTestName];
 
     private const string WriteTestName = ".acshadow-write-test";
 

@@ -7,7 +7,8 @@ namespace AcShadow.Cli.Infrastructure;
 /// acshadow writes there, digits aside. That is the format declaration of a JSON file
 /// (<c>"format": "acshadow.shadow/2",</c>; acdream's <c>"GfxObjId": …</c>), a CSV's header row, an SVG's
 /// root element; the digits may differ (versions, ids, sizes), nothing else. A user's own file of the
-/// same name differs there, and is left alone.
+/// same name differs there, and is left alone. A binary glTF file (<c>view</c>'s .glb) has no lines: it is
+/// ours when it starts with the glTF magic and its JSON names acshadow as its generator.
 /// </summary>
 public static class OutputOwnership
 {
@@ -16,9 +17,14 @@ public static class OutputOwnership
 
     public static bool IsOurs(ReadOnlySpan<byte> existingHead, ReadOnlySpan<byte> newContent)
     {
+        if (IsGlb(newContent)) return IsGlb(existingHead) && existingHead.IndexOf(GlbGenerator) >= 0;
         var ours = Signature(newContent);
         return ours is not null && ours == Signature(existingHead);
     }
+
+    private static ReadOnlySpan<byte> GlbGenerator => "\"generator\":\"acshadow view\""u8;
+
+    private static bool IsGlb(ReadOnlySpan<byte> bytes) => bytes.StartsWith("glTF"u8);
 
     private static string? Signature(ReadOnlySpan<byte> bytes)
     {

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 

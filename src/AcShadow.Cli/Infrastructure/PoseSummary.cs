@@ -1,4 +1,5 @@
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 

@@ -1,4 +1,5 @@
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Audit;
 

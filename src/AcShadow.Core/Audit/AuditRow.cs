@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Shapes;
+
 namespace AcShadow.Core.Audit;
 
 /// <summary>

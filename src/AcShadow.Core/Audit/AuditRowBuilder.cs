@@ -1,7 +1,8 @@
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Audit;
 

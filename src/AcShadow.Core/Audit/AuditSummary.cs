@@ -18,7 +18,7 @@ public sealed record AuditSummary(IReadOnlyList<(string Key, string Label, int C
             ("none", "family none (nothing collides)", rows.Count(r => r.Category == AuditCategory.None)),
             ("flagMismatch", "HasPhysicsBSP flag disagrees with the parts", rows.Count(r => r.FlagMismatch)),
             ("missingParts", "with a part missing from the dat", rows.Count(r => r.MissingParts > 0)),
-            ("noPose", "with a BSP part left unposed (no-pose)", rows.Count(r => r.DiagnosticCodes.Contains(Shapes.DiagnosticCodes.NoPose))),
+            ("noPose", "with a BSP part left unposed (no-pose)", rows.Count(r => r.DiagnosticCodes.Contains(Fixtures.Shapes.DiagnosticCodes.NoPose))),
             ("policiesDiffer", "retail and union build different shapes or placements",
                 rows.Count(r => r.RetailShapes != r.UnionShapes || r.Placement != r.UnionPlacement)),
             ("coverageBelow10", "bsp, cylinder fallback covers < 10% of the footprint", bsp.Count(r => r.Coverage < LowCoverage)),

@@ -1,8 +1,9 @@
-using AcShadow.Core.Reports;
 using System.Text;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Core.Reports;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Audit;
 
@@ -77,7 +78,7 @@ public static class AuditWriter
     public static string Markdown(AuditReport report, DatSourceInfo dat, BatchSelection selection)
     {
         var sb = new StringBuilder();
-        sb.Append($"# acshadow audit\n\nDat `{dat.FileName}` ({dat.Size} bytes, iteration {dat.Iteration}); selection `{selection.Describe()}`.\n\n");
+        sb.Append($"# acshadow audit\n\nDat `{dat.FileName}` ({dat.Size} bytes, iteration {dat.Iteration} from the {dat.IterationSource.Describe()}); selection `{selection.Describe()}`.\n\n");
         sb.Append("| ").Append(string.Join(" | ", report.Columns.Select(c => c.Header))).Append(" |\n");
         sb.Append('|').Append(string.Concat(report.Columns.Select(_ => "---|"))).Append('\n');
         foreach (var row in report.Rows)

@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Audit;
 

@@ -1,4 +1,5 @@
-using AcShadow.Core.Geometry;
+
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Audit;
 

@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Batch;
+
 namespace AcShadow.Core.Batch;
 
 /// <summary>index.json read back: the inputs to regenerate with, and the files it lists.</summary>

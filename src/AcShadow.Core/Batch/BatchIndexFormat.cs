@@ -13,6 +13,8 @@ public static class BatchIndexFormat
         OutputKind.Bsp => "bsp",
         OutputKind.Scene => "scene",
         OutputKind.AcdreamGfxObj => "acdream",
+        OutputKind.Cell => "cell",
+        OutputKind.AcdreamCell => "acdream-cell",
         _ => throw new ArgumentOutOfRangeException(nameof(kind)),
     };
 }

@@ -4,6 +4,9 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Batch;
 
@@ -88,7 +91,11 @@ public static class BatchIndexReader
     {
         var kindText = Str(e, "kind", at);
         if (!Enum.TryParse<DatFileKind>(kindText, out var kind)) throw new FormatException($"{at}.kind \"{kindText}\" is not a dat kind");
-        return new DatSourceInfo(Str(e, "fileName", at), Num(e, "size", at), kind, (int)Num(e, "iteration", at), (int)Num(e, "blockSize", at));
+        // iterationSource is absent from indexes written before the Iteration record was read.
+        var source = DatIterationSource.Directory;
+        if (e.TryGetProperty("iterationSource", out var s) && !(s.ValueKind == JsonValueKind.String && DatIterationSources.TryParse(s.GetString(), out source)))
+            throw new FormatException($"{at}.iterationSource is not record, directory or directory-record-unreadable");
+        return new DatSourceInfo(Str(e, "fileName", at), Num(e, "size", at), kind, (int)Num(e, "iteration", at), (int)Num(e, "blockSize", at)) { IterationSource = source };
     }
 
     private static BatchSelection Selection(JsonElement e, string at)
@@ -111,7 +118,8 @@ public static class BatchIndexReader
                 throw new FormatException($"{at}.landblock is not a landblock id");
             landblock = id;
         }
-        return new BatchSelection(Bool(e, "doors", at), Bool(e, "all", at), list, landblock);
+        var cells = !e.TryGetProperty("cells", out var c) || c.ValueKind != JsonValueKind.False;
+        return new BatchSelection(Bool(e, "doors", at), Bool(e, "all", at), list, landblock) { Cells = cells };
     }
 
     private static JsonElement Member(JsonElement e, string name, string at)

@@ -1,8 +1,10 @@
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
 
@@ -77,6 +79,15 @@ public static class BatchIndexWriter
     private static JsonObj Inputs(BatchInputs inputs)
     {
         var selection = inputs.Selection;
+        var chosen = new JsonObj()
+            .Add("doors", selection.Doors)
+            .Add("all", selection.All)
+            .Add("setupsFile", selection.Setups is { } list
+                ? new JsonObj().Add("name", list.Name).Add("ids", JsonArr.Of(list.Ids.Select(JsonIds.Format)))
+                : JsonNull.Value)
+            .Add("landblock", selection.Landblock is { } lb ? JsonIds.Format(lb) : null);
+        // Written only when off, so indexes of runs before cells existed read the same.
+        if (!selection.Cells) chosen.Add("cells", false);
         var json = new JsonObj()
             .Add("dat", Dat(inputs.Dat))
             .Add("cellDat", inputs.CellDat is { } cell ? Dat(cell) : JsonNull.Value)
@@ -85,13 +96,7 @@ public static class BatchIndexWriter
             .Add("pose", inputs.Pose.Name())
             .Add("doorState", inputs.DoorState.Name())
             .Add("motionTable", inputs.MotionTable is { } table ? JsonIds.Format(table) : null)
-            .Add("selection", new JsonObj()
-                .Add("doors", selection.Doors)
-                .Add("all", selection.All)
-                .Add("setupsFile", selection.Setups is { } list
-                    ? new JsonObj().Add("name", list.Name).Add("ids", JsonArr.Of(list.Ids.Select(JsonIds.Format)))
-                    : JsonNull.Value)
-                .Add("landblock", selection.Landblock is { } lb ? JsonIds.Format(lb) : null));
+            .Add("selection", chosen);
         return inputs.Formats == OutputFormats.Canonical ? json : json.Add("formats", inputs.Formats.Name());
     }
 
@@ -100,6 +105,7 @@ public static class BatchIndexWriter
         .Add("size", info.Size)
         .Add("kind", info.Kind.ToString())
         .Add("iteration", info.Iteration)
+        .Add("iterationSource", info.IterationSource.Name())
         .Add("blockSize", info.BlockSize);
 
     /// <summary>One file's entry, as index.json and incremental.json both record it.</summary>

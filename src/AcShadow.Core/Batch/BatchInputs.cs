@@ -2,6 +2,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Batch;
 

@@ -31,6 +31,7 @@ public static class BatchPlanner
             var info = cell.ReadLandBlockInfo(landblock)
                 ?? throw new SelectionException(SelectionProblem.NotInDat, $"landblock {LandblockIds.Short(landblock)} has no LandBlockInfo (0x{landblock:X8}) in {cell.Info.FileName}");
             scene = LandblockScene.From(info);
+            if (selection.Cells) scene = WithCells(scene, info, cell);
             Request(scene.SetupIds, SelectionSource.Landblock);
         }
 
@@ -42,5 +43,30 @@ public static class BatchPlanner
             else skipped.Add(new SkippedItem(id, SkippedItem.NotInDat, from));
         }
         return new BatchPlan(setups, scene, skipped);
+    }
+
+    /// <summary>Each of the landblock's cells decoded once; one that is missing or damaged is named, not fatal.</summary>
+    private static LandblockScene WithCells(LandblockScene scene, Dat.Objects.LandBlockInfo info, IDatSource cell)
+    {
+        var cells = new List<Dat.Objects.EnvCell>();
+        var missing = new List<SkippedCell>();
+        // A landblock cannot have more cells than the whole cell dat lists: a NumCells above that is damage
+        // (it would otherwise name tens of thousands of missing cells), refused as a corrupt dat.
+        var listed = cell.ListIds(DatObjectKind.EnvCell).ToHashSet();
+        if (info.NumCells > listed.Count)
+            throw new DatFormatException($"LandBlockInfo 0x{info.Id:X8} counts {info.NumCells} cells but the cell dat lists only {listed.Count} EnvCells");
+        foreach (var id in LandblockScene.CellIds(info))
+        {
+            try
+            {
+                if (listed.Contains(id) && cell.ReadEnvCell(id) is { } envCell) cells.Add(envCell);
+                else missing.Add(new SkippedCell(id, SkippedItem.NotInDat));
+            }
+            catch (DatFormatException e)
+            {
+                missing.Add(new SkippedCell(id, $"unreadable: {e.Message}"));
+            }
+        }
+        return scene with { Cells = cells, MissingCells = missing };
     }
 }

@@ -1,16 +1,18 @@
 using System.Collections.Concurrent;
+using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
 
 /// <summary>
 /// Runs a <see cref="BatchPlan"/> through the one <see cref="ExportEngine"/>: Setups in parallel, each
 /// file handed to the caller's writer as soon as it is made (each path once; a shared GfxObj's dump by
-/// whichever Setup needs it first), in the formats the inputs ask for, then the scene, then index.json
+/// whichever Setup needs it first), in the formats the inputs ask for, then the landblock's cells, then the scene, then index.json
 /// from the files' entries, sorted by path, so the output never depends on scheduling. Only entries are
 /// kept, never file bytes: memory stays bounded whatever the dat's size. Pure: the caller writes.
 /// </summary>
@@ -84,7 +86,18 @@ public static class BatchRunner
 
         if (plan.Scene is { } scene)
         {
-            var sceneExport = SceneExporter.Export(scene, engine, setupFiles, problems);
+            // The cells first: scene.json lists their files. Each cell structure becomes geometry once.
+            var cellExporter = new CellExporter(engine);
+            var cells = scene.Cells.Select(c => cellExporter.Export(c, scene, setupFiles, problems)).ToArray();
+            foreach (var cell in cells)
+            {
+                if (cell.File is { } cellFile)
+                    foreach (var entry in Emit(cellFile)) files[entry.RelativePath] = entry;
+                foreach (var entry in cell.BspEntries) files.TryAdd(entry.RelativePath, entry);
+                skipped.AddRange(cell.Skipped);
+            }
+            skipped.AddRange(scene.MissingCells.Select(m => new SkippedItem(m.Id, m.Reason, SelectionSource.Landblock)));
+            var sceneExport = SceneExporter.Export(scene, engine, setupFiles, problems, cells);
             foreach (var entry in Emit(sceneExport.SceneFile)) files[entry.RelativePath] = entry;
             foreach (var entry in sceneExport.BspEntries) files.TryAdd(entry.RelativePath, entry);
             skipped.AddRange(sceneExport.Skipped);

@@ -1,4 +1,5 @@
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
 
@@ -11,6 +12,9 @@ public sealed record BatchSelection(bool Doors, bool All, SetupList? Setups, uin
 {
     public bool IsEmpty => !Doors && !All && Setups is null && Landblock is null;
 
+    /// <summary>With a landblock: also its indoor cells (EnvCells); --no-cells clears it.</summary>
+    public bool Cells { get; init; } = true;
+
     /// <summary>A short human description, e.g. "--doors --all --landblock 0xA9B4".</summary>
     public string Describe()
     {
@@ -19,6 +23,7 @@ public sealed record BatchSelection(bool Doors, bool All, SetupList? Setups, uin
         if (All) parts.Add("--all");
         if (Setups is not null) parts.Add($"--setups {Setups.Name}");
         if (Landblock is { } lb) parts.Add($"--landblock {LandblockIds.Short(lb)}");
+        if (Landblock is not null && !Cells) parts.Add("--no-cells");
         return parts.Count == 0 ? "(nothing)" : string.Join(' ', parts);
     }
 }

@@ -18,6 +18,9 @@ public sealed record BatchSummary(
     int SetupsReused,
     IncrementalState State)
 {
+    /// <summary>Cell files written (a landblock's indoor cells).</summary>
+    public int Cells => Files.Count(f => f.Kind == OutputKind.Cell);
+
     /// <summary>index.json, streamed: on a retail dat it is megabytes, written at the end of the run.</summary>
     public void WriteIndex(Stream destination) => BatchIndexWriter.Write(destination, Inputs, Files, Skipped);
 

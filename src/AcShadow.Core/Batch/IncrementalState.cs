@@ -1,3 +1,4 @@
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Export;
 using AcShadow.Core.Shapes;
 

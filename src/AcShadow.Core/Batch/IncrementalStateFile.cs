@@ -1,6 +1,7 @@
 using System.Text.Json;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
 

@@ -1,6 +1,7 @@
 using System.Globalization;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Bsp;
 
@@ -8,7 +9,8 @@ namespace AcShadow.Core.Bsp;
 /// Turns a GfxObj's PhysicsPolygons and PhysicsBSP into a <see cref="BspDump"/>: planes computed the
 /// retail way (<see cref="PolygonPlane"/>), only the vertices the physics polygons use, the tree
 /// flattened in preorder. Problems (degenerate or non-planar polygons, ids that point nowhere, NaN or
-/// infinite coordinates, a tree deeper than <see cref="BspLimits.MaxDepth"/>) become diagnostics naming
+/// infinite coordinates, a tree deeper than <see cref="BspLimits.MaxDepth"/>, an internal node with one
+/// child) become diagnostics naming
 /// the polygon or node; they never abort the extraction. A vertex that is not finite is left out like a
 /// missing one (its polygons get no plane), an internal node's non-finite splitting plane is written as
 /// absent, and nodes below the depth limit are dropped, so the dump holds only what a consumer can use.
@@ -120,6 +122,10 @@ public static class BspExtractor
                 diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP node {index}: splitting plane has NaN or infinite values; written as absent");
                 splitting = null;
             }
+            // Retail's solid query (BSPNODE::sphere_intersects_solid) follows both children unchecked, so real
+            // physics BSPs give every internal node both; the missing side is read as empty space, our choice.
+            if (node.Pos is null || node.Neg is null)
+                diagnostics.Add($"GfxObj 0x{gfx.Id:X8} BSP node {index} has no {(node.Pos is null ? "positive" : "negative")} child: retail's solid query would fail here; acshadow treats the missing side as empty space");
             var pos = node.Pos is null ? null : Flatten(node.Pos, depth + 1);
             var neg = node.Neg is null ? null : Flatten(node.Neg, depth + 1);
             nodes[index] = new BspNode(index, node.Type, splitting, node.BoundingSphere, pos, neg, 0, false, []);

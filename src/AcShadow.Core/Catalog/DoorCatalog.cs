@@ -1,5 +1,6 @@
 using System.Globalization;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Catalog;
 

@@ -1,5 +1,7 @@
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 
@@ -112,7 +114,7 @@ public static class ChartRunner
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
     }
 
-    private sealed class NothingCollides : Collision.ISphereOverlap
+    private sealed class NothingCollides : ISphereOverlap
     {
         public bool Overlaps(System.Numerics.Vector3 center, float radius) => false;
     }

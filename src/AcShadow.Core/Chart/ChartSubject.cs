@@ -1,7 +1,8 @@
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart;
 

@@ -1,8 +1,8 @@
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart;
 

@@ -37,6 +37,9 @@ public sealed class DatArchive : IDisposable
     /// <summary>All directory entries, sorted by id.</summary>
     public IReadOnlyList<DatDirectoryEntry> Entries => _directory.Value.Entries;
 
+    /// <summary>How the directory B-tree is built: nodes, levels, and which tool's branch fill it carries (walks it all).</summary>
+    public DatDirectoryShape DirectoryShape => _directory.Value.Shape;
+
     private DatArchive(Stream stream, bool ownsStream, string name)
     {
         _stream = stream;
@@ -48,14 +51,15 @@ public sealed class DatArchive : IDisposable
             throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
         var headerBytes = ReadRaw(0, DatHeader.Size);
         Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
-        _directory = new Lazy<DirectoryIndex>(() => new DirectoryIndex(ReadDirectory()), LazyThreadSafetyMode.ExecutionAndPublication);
+        _directory = new Lazy<DirectoryIndex>(ReadDirectory, LazyThreadSafetyMode.ExecutionAndPublication);
         if (Header.RootBlock != 0) Node(Header.RootBlock);
     }
 
     /// <summary>Every entry, sorted by id, and where each id sits in that list.</summary>
-    private sealed class DirectoryIndex(DatDirectoryEntry[] entries)
+    private sealed class DirectoryIndex(DatDirectoryEntry[] entries, DatDirectoryShape shape)
     {
         public DatDirectoryEntry[] Entries { get; } = entries;
+        public DatDirectoryShape Shape { get; } = shape;
         public Dictionary<uint, int> IndexById { get; } = entries.Select((e, i) => (e.Id, i)).ToDictionary(p => p.Id, p => p.i);
     }
 
@@ -115,7 +119,7 @@ public sealed class DatArchive : IDisposable
             if (node.IsLeaf) return false;
             var parent = offset;
             offset = node.Branches[low];
-            if (offset == 0) throw new DatFormatException($"B-tree node 0x{parent:X8} has no branch {low} though it is not a leaf");
+            if (BranchFills.IsNoBranch(offset)) throw new DatFormatException($"B-tree node 0x{parent:X8} has no branch {low} though it is not a leaf");
         }
     }
 
@@ -186,25 +190,34 @@ public sealed class DatArchive : IDisposable
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
     public int MaxIteration => Entries.Count == 0 ? 0 : Entries.Max(e => e.Iteration);
 
-    private DatDirectoryEntry[] ReadDirectory()
+    private DirectoryIndex ReadDirectory()
     {
         var result = new List<DatDirectoryEntry>();
-        if (Header.RootBlock == 0) return [];
+        if (Header.RootBlock == 0) return new DirectoryIndex([], new DatDirectoryShape(0, 0, BranchFill.None));
         var visited = new HashSet<int>();
+        int levels = 0;
+        var fill = BranchFill.None;
         Walk(Header.RootBlock, 0);
         result.Sort((a, b) => a.Id.CompareTo(b.Id));
         for (var i = 1; i < result.Count; i++)
             if (result[i].Id == result[i - 1].Id)
                 throw new DatFormatException($"{Name}: the directory lists id 0x{result[i].Id:X8} twice");
-        return result.ToArray();
+        return new DirectoryIndex(result.ToArray(), new DatDirectoryShape(visited.Count, levels, fill));
 
         void Walk(int offset, int depth)
         {
             if (depth > MaxDepth) throw new DatFormatException($"{Name}: B-tree deeper than {MaxDepth} levels (cycle?)");
             if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
             var node = _searchedNodes.TryGetValue(offset, out var searched) ? searched : ReadNode(offset);
+            levels = Math.Max(levels, depth + 1);
+            fill = fill.Combine(node.Fill);
             result.AddRange(node.Entries);
-            foreach (var child in node.Branches) Walk(child, depth + 1);
+            for (var i = 0; i < node.Branches.Count; i++)
+            {
+                if (BranchFills.IsNoBranch(node.Branches[i]))
+                    throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} has no branch {i} (0x{node.Branches[i]:X8}) though it is not a leaf");
+                Walk(node.Branches[i], depth + 1);
+            }
         }
     }
 

@@ -7,7 +7,9 @@ namespace AcShadow.Core.Dat;
 /// </summary>
 public static class DatArchiveWriter
 {
-    public sealed record Options(DatFileKind Kind, int BlockSize = 1024, int Iteration = 1, uint RawDate = 0, uint SubSet = 0);
+    /// <param name="Fill">What the directory's unused branch slots hold: <see cref="BranchFill.Zero"/> as retail
+    /// writes them, or <see cref="BranchFill.Cdcd"/> as DatReaderWriter does.</param>
+    public sealed record Options(DatFileKind Kind, int BlockSize = 1024, int Iteration = 1, uint RawDate = 0, uint SubSet = 0, BranchFill Fill = BranchFill.Zero);
 
     public static byte[] Write(IReadOnlyDictionary<uint, byte[]> objects, Options options)
     {
@@ -24,7 +26,9 @@ public static class DatArchiveWriter
             entries.Add(new DatDirectoryEntry(0, 2, id, offset, (uint)bytes.Length, options.RawDate, options.Iteration));
         }
 
-        var root = entries.Count == 0 ? 0 : WriteTree(file, entries, HeightFor(entries.Count), blockSize);
+        if (options.Fill is not (BranchFill.Zero or BranchFill.Cdcd))
+            throw new ArgumentOutOfRangeException(nameof(options), options.Fill, "a directory is written with zero or 0xCDCDCDCD branch fill");
+        var root = entries.Count == 0 ? 0 : WriteTree(file, entries, HeightFor(entries.Count), blockSize, options.Fill);
         var header = new DatHeader(blockSize, (int)file.Length, options.Kind, options.SubSet, 0, 0, 0, root, 0, 1, 1, Guid.Empty, 1);
         var headerWriter = new DatBinaryWriter();
         header.Write(headerWriter);
@@ -49,7 +53,7 @@ public static class DatArchiveWriter
     }
 
     /// <summary>Children first, so a parent knows its children's offsets; every leaf sits at the same depth.</summary>
-    private static int WriteTree(MemoryStream file, List<DatDirectoryEntry> entries, int height, int blockSize)
+    private static int WriteTree(MemoryStream file, List<DatDirectoryEntry> entries, int height, int blockSize, BranchFill fill)
     {
         DatBTreeNode node;
         if (height == 1)
@@ -68,14 +72,14 @@ public static class DatArchiveWriter
             for (var c = 0; c < children; c++)
             {
                 var take = perChild / children + (c < perChild % children ? 1 : 0);
-                branches.Add(WriteTree(file, entries.GetRange(cursor, take), height - 1, blockSize));
+                branches.Add(WriteTree(file, entries.GetRange(cursor, take), height - 1, blockSize, fill));
                 cursor += take;
                 if (c < children - 1) separators.Add(entries[cursor++]);
             }
             node = new DatBTreeNode(branches, separators);
         }
         var w = new DatBinaryWriter();
-        node.Write(w);
+        (node with { Fill = fill }).Write(w);
         return AppendChain(file, w.ToArray(), blockSize);
     }
 

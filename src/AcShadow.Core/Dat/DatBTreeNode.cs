@@ -2,7 +2,8 @@ namespace AcShadow.Core.Dat;
 
 /// <summary>
 /// A B-tree directory node: 62 branch offsets, an entry count, then up to 61 entries, stored in a
-/// block chain like any object. A node whose first branch is 0 is a leaf.
+/// block chain like any object. A node whose first branch is "no branch" (0 in retail dats, 0xCDCDCDCD in
+/// dats DatReaderWriter wrote) is a leaf; an internal node's first count + 1 branches are its children.
 /// </summary>
 public sealed record DatBTreeNode(IReadOnlyList<int> Branches, IReadOnlyList<DatDirectoryEntry> Entries)
 {
@@ -11,6 +12,9 @@ public sealed record DatBTreeNode(IReadOnlyList<int> Branches, IReadOnlyList<Dat
     public const int ByteSize = MaxBranches * 4 + 4 + MaxEntries * DatDirectoryEntry.Size24;
 
     public bool IsLeaf => Branches.Count == 0;
+
+    /// <summary>What the unused branch slots held when the node was read; what <see cref="Write"/> puts there.</summary>
+    public BranchFill Fill { get; init; } = BranchFill.Zero;
 
     public static DatBTreeNode Read(DatBinaryReader r, int nodeOffset)
     {
@@ -21,13 +25,25 @@ public sealed record DatBTreeNode(IReadOnlyList<int> Branches, IReadOnlyList<Dat
             throw new DatFormatException($"B-tree node at 0x{nodeOffset:X8} claims {count} entries (at most {MaxEntries})");
         var entries = new DatDirectoryEntry[count];
         for (var i = 0; i < count; i++) entries[i] = DatDirectoryEntry.Read(r);
-        var branches = raw[0] == 0 ? Array.Empty<int>() : raw.Take(count + 1).ToArray();
-        return new DatBTreeNode(branches, entries);
+        // A "no branch" among an internal node's first count + 1 is damage, refused when it is followed.
+        var used = BranchFills.IsNoBranch(raw[0]) ? 0 : count + 1;
+        var leaf = used == 0;
+        return new DatBTreeNode(leaf ? [] : raw[..used], entries) { Fill = FillOf(raw.AsSpan(used)) };
     }
 
+    private static BranchFill FillOf(ReadOnlySpan<int> unused)
+    {
+        if (unused.IsEmpty) return BranchFill.None;
+        if (!unused.ContainsAnyExcept(0)) return BranchFill.Zero;
+        if (!unused.ContainsAnyExcept(BranchFills.Cdcd)) return BranchFill.Cdcd;
+        return BranchFill.Other;
+    }
+
+    /// <summary>Writes the node with its unused branch slots set as <see cref="Fill"/> says (0 unless Cdcd).</summary>
     public void Write(DatBinaryWriter w)
     {
-        for (var i = 0; i < MaxBranches; i++) w.WriteInt32(i < Branches.Count ? Branches[i] : 0);
+        var unused = Fill == BranchFill.Cdcd ? BranchFills.Cdcd : 0;
+        for (var i = 0; i < MaxBranches; i++) w.WriteInt32(i < Branches.Count ? Branches[i] : unused);
         w.WriteInt32(Entries.Count);
         foreach (var e in Entries) e.Write(w);
         for (var i = Entries.Count; i < MaxEntries; i++) w.WriteBytes(new byte[DatDirectoryEntry.Size24]);

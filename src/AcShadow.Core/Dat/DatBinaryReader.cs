@@ -47,6 +47,14 @@ public sealed class DatBinaryReader
     public float ReadSingle() => BinaryPrimitives.ReadSingleLittleEndian(Take(4));
     public byte[] ReadBytes(int count) => Take(count).ToArray();
 
+    /// <summary>The next <paramref name="count"/> bytes without moving past them (bounds-checked like a read).</summary>
+    public ReadOnlySpan<byte> Peek(int count)
+    {
+        var span = Take(count);
+        _offset -= count;
+        return span;
+    }
+
     /// <summary>Steps over bytes the decoder does not keep (bounds-checked like a read, no copy).</summary>
     public void Skip(int count) => Take(count);
 
@@ -73,6 +81,19 @@ public sealed class DatBinaryReader
         if ((b0 & 0x40) == 0) return (uint)(((b0 & 0x7F) << 8) | b1);
         var low = ReadUInt16();
         return (uint)(((((b0 & 0x3F) << 8) | b1) << 16) | low);
+    }
+
+    /// <summary>
+    /// A data id of a known type, packed as its offset from <paramref name="knownType"/>: one ushort when the
+    /// top bit is clear; else that ushort's low 14 bits are the offset's bits 16..29 and a second ushort
+    /// holds bits 0..15 (retail's packed data id; DatReaderWriter and ACE read it so).
+    /// </summary>
+    public uint ReadPackedDataId(uint knownType)
+    {
+        var first = ReadUInt16();
+        if ((first & 0x8000) == 0) return knownType + first;
+        var low = ReadUInt16();
+        return knownType + ((uint)(first & 0x3FFF) << 16 | low);
     }
 
     /// <summary>Skips padding so the next read starts at a multiple of <paramref name="alignment"/>.</summary>

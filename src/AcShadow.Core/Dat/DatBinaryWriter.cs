@@ -40,6 +40,20 @@ public sealed class DatBinaryWriter
         WriteUInt16((ushort)value);
     }
 
+    /// <summary>
+    /// <see cref="DatBinaryReader.ReadPackedDataId"/>'s layout: the short form for offsets up to 0x7FFF (the
+    /// readers' limit), the long form up to 0x3FFFFFFF.
+    /// </summary>
+    public void WritePackedDataId(uint id, uint knownType)
+    {
+        if (id < knownType || id - knownType > 0x3FFFFFFF)
+            throw new ArgumentOutOfRangeException(nameof(id), id, $"a packed data id holds an offset of 0 to 0x3FFFFFFF from 0x{knownType:X8}");
+        var offset = id - knownType;
+        if (offset <= 0x7FFF) { WriteUInt16((ushort)offset); return; }
+        WriteUInt16((ushort)(0x8000 | (offset >> 16)));
+        WriteUInt16((ushort)offset);
+    }
+
     public void Align(int alignment)
     {
         while (Offset % alignment != 0) WriteByte(0);

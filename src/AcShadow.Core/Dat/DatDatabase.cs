@@ -24,8 +24,12 @@ public sealed class DatDatabase : IDatSource, IDisposable
         if (cacheCapacity is { } c) ArgumentOutOfRangeException.ThrowIfLessThan(c, 1);
         _archive = archive;
         _capacity = cacheCapacity;
-        // The iteration needs the whole directory: read only when something asks (a dump never does).
-        _info = new Lazy<DatSourceInfo>(() => new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, archive.MaxIteration, archive.Header.BlockSize));
+        // Read only when something asks (a dump never does): the fallback needs the whole directory.
+        _info = new Lazy<DatSourceInfo>(() =>
+        {
+            var (iteration, source) = DatIteration.Of(archive);
+            return new DatSourceInfo(archive.Name, archive.Length, archive.Header.Kind, iteration, archive.Header.BlockSize) { IterationSource = source };
+        });
     }
 
     private readonly Lazy<DatSourceInfo> _info;
@@ -45,6 +49,8 @@ public sealed class DatDatabase : IDatSource, IDisposable
     public int MotionObjectsDecoded => _motionDecodes;
 
     private int _motionDecodes;
+    public EnvCell? ReadEnvCell(uint id) => Decode(id, DatObjectKind.EnvCell, EnvCell.Read, c => c.Id);
+    public CellEnvironment? ReadEnvironment(uint id) => Decode(id, DatObjectKind.Environment, CellEnvironment.Read, e => e.Id);
 
     public IReadOnlyList<uint> ListIds(DatObjectKind kind) =>
         _archive.Entries.Where(e => kind.Contains(e.Id)).Select(e => e.Id).ToArray();

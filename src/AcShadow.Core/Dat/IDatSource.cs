@@ -16,8 +16,19 @@ public interface IDatSource : IMotionSource
     Setup? ReadSetup(uint id);
     GfxObj? ReadGfxObj(uint id);
     LandBlockInfo? ReadLandBlockInfo(uint id);
+
+    /// <summary>An indoor cell (cell dat); null when the source has none (the default for sources without cells).</summary>
+    EnvCell? ReadEnvCell(uint id) => null;
+
+    /// <summary>An Environment (portal dat); null when the source has none.</summary>
+    CellEnvironment? ReadEnvironment(uint id) => null;
+
     IReadOnlyList<uint> ListIds(DatObjectKind kind);
 }
 
 /// <summary>What identifies the dat a result came from (recorded in index.json).</summary>
-public sealed record DatSourceInfo(string FileName, long Size, DatFileKind Kind, int Iteration, int BlockSize);
+public sealed record DatSourceInfo(string FileName, long Size, DatFileKind Kind, int Iteration, int BlockSize)
+{
+    /// <summary>Where <see cref="Iteration"/> came from.</summary>
+    public DatIterationSource IterationSource { get; init; } = DatIterationSource.Directory;
+}

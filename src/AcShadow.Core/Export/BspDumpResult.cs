@@ -1,4 +1,5 @@
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Export;
 

@@ -6,6 +6,8 @@ public enum OutputKind
     Bsp,
     Scene,
     AcdreamGfxObj,
+    Cell,
+    AcdreamCell,
 }
 
 /// <summary>

@@ -1,11 +1,12 @@
 using System.Text;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Export;
 
 /// <summary>
 /// Turns a run's canonical files into the files the chosen formats ask for: the canonical ones as they are,
-/// and for each BSP dump its acdream GfxObj file. The acdream file is made from the canonical file's own
+/// and for each BSP dump its acdream GfxObj file, for each cell file its acdream cell file. The acdream file is made from the canonical file's own
 /// bytes (read back losslessly), so both formats always say the same thing.
 /// </summary>
 public static class OutputFormatSelection
@@ -25,6 +26,12 @@ public static class OutputFormatSelection
             var dump = BspFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
             result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(canonical.Id), OutputKind.AcdreamGfxObj, canonical.Id,
                 AcdreamGfxObjWriter.Write(dump), 0, AcdreamGfxObjWriter.PolygonCount(dump)));
+        }
+        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == OutputKind.Cell)
+        {
+            var cell = Fixtures.Cells.CellFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
+            result.Add(new OutputFile(Fixtures.Cells.CellFileFormat.AcdreamPathFor(canonical.Id), OutputKind.AcdreamCell, canonical.Id,
+                AcdreamCellWriter.Write(cell), 0, AcdreamCellWriter.PolygonCount(cell)));
         }
         return result;
     }

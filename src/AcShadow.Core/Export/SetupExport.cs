@@ -1,5 +1,6 @@
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Export;
 

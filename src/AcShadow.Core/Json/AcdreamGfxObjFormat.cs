@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Json;
+
 namespace AcShadow.Core.Json;
 
 /// <summary>

@@ -1,5 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Json;
 

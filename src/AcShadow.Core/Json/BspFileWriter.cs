@@ -1,6 +1,9 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Json;
 

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Json;
 

@@ -1,6 +1,8 @@
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Scenes;
 

@@ -11,6 +11,24 @@ public sealed record LandblockScene(uint LandBlockInfoId, IReadOnlyList<SceneObj
 {
     public LandblockCoordinates Coordinates => LandblockCoordinates.Of(LandBlockInfoId);
 
+    /// <summary>The landblock's indoor cells, each decoded once, in id order (empty with --no-cells).</summary>
+    public IReadOnlyList<EnvCell> Cells { get; init; } = [];
+
+    /// <summary>Cells the LandBlockInfo counts but the cell dat could not give (id → why).</summary>
+    public IReadOnlyList<SkippedCell> MissingCells { get; init; } = [];
+
+    /// <summary>
+    /// The EnvCell ids a LandBlockInfo implies: its NumCells cells are 0xXXYY0100 upwards (ACE's
+    /// LandblockInfo consumers and DatReaderWriter's readers number them so).
+    /// </summary>
+    public static IReadOnlyList<uint> CellIds(LandBlockInfo info)
+    {
+        var count = (int)Math.Min(info.NumCells, 0xFFFD - 0x0100 + 1u);
+        var ids = new uint[count];
+        for (var i = 0; i < count; i++) ids[i] = (info.Id & 0xFFFF0000u) | (uint)(0x0100 + i);
+        return ids;
+    }
+
     public static LandblockScene From(LandBlockInfo info)
     {
         var objects = new List<SceneObject>();
@@ -22,13 +40,18 @@ public sealed record LandblockScene(uint LandBlockInfoId, IReadOnlyList<SceneObj
     }
 
     /// <summary>The distinct Setup ids placed, sorted.</summary>
-    public IReadOnlyList<uint> SetupIds => Objects.Where(o => o.Kind == SceneObjectKind.Setup).Select(o => o.Id).Distinct().Order().ToArray();
+    public IReadOnlyList<uint> SetupIds => Objects.Where(o => o.Kind == SceneObjectKind.Setup).Select(o => o.Id)
+        .Concat(Cells.SelectMany(c => c.StaticObjects).Select(s => s.Id).Where(id => KindOf(id) == SceneObjectKind.Setup))
+        .Distinct().Order().ToArray();
 
     /// <summary>The distinct bare GfxObj ids placed, sorted.</summary>
     public IReadOnlyList<uint> GfxObjIds => Objects.Where(o => o.Kind == SceneObjectKind.GfxObj).Select(o => o.Id).Distinct().Order().ToArray();
 
-    private static SceneObjectKind KindOf(uint id) =>
+    internal static SceneObjectKind KindOf(uint id) =>
         DatObjectKind.Setup.Contains(id) ? SceneObjectKind.Setup
         : DatObjectKind.GfxObj.Contains(id) ? SceneObjectKind.GfxObj
         : SceneObjectKind.Other;
 }
+
+/// <summary>A cell the landblock counts that could not be read: not in the cell dat, or unreadable.</summary>
+public sealed record SkippedCell(uint Id, string Reason);

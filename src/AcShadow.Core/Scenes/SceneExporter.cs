@@ -1,9 +1,11 @@
 using AcShadow.Core.Batch;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Scenes;
 
@@ -16,8 +18,9 @@ public static class SceneExporter
 {
     /// <param name="setupFiles">The shadow file of every Setup the batch exported (the scene points at it).</param>
     /// <param name="setupProblems">Why a placed Setup has no export (not in the dat, unreadable).</param>
+    /// <param name="cells">The cell files written for the scene's cells (listed in scene.json's "cells").</param>
     public static SceneExport Export(LandblockScene scene, ExportEngine engine,
-        IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems)
+        IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems, IReadOnlyList<Cells.CellExport>? cells = null)
     {
         var bspFiles = new SortedDictionary<string, BspDumpResult>(StringComparer.Ordinal);
         var skipped = new Dictionary<uint, SkippedItem>();
@@ -44,14 +47,32 @@ public static class SceneExporter
                 .Add("gfxObjs", scene.Objects.Count(o => o.Kind == SceneObjectKind.GfxObj))
                 .Add("resolved", resolved)
                 .Add("unresolved", unresolved))
-            .Add("objects", objects);
+            .Add("objects", objects)
+            .Add("cells", JsonArr.Of(CellEntries(scene, cells ?? []), c => c));
         var file = new OutputFile(SceneFileFormat.Path, OutputKind.Scene, scene.LandBlockInfoId,
             CanonicalJsonWriter.WriteUtf8(json), 0, 0);
         return new SceneExport(file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
             bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
     }
 
-    private static (JsonObj Json, bool Resolved) Describe(SceneObject placed, LandblockScene scene, ExportEngine engine,
+    /// <summary>Every cell the landblock counts, in id order: its file, or why it has none.</summary>
+    private static IEnumerable<JsonObj> CellEntries(LandblockScene scene, IReadOnlyList<Cells.CellExport> cells)
+    {
+        var entries = cells.Select(c => (c.CellId, Json: new JsonObj()
+                .Add("id", JsonIds.Format(c.CellId))
+                .Add("file", c.Path)
+                .Add("objects", c.ObjectCount)
+                .Add("diagnostics", c.Diagnostics.Count)))
+            .Concat(scene.MissingCells.Select(m => (CellId: m.Id, Json: new JsonObj()
+                .Add("id", JsonIds.Format(m.Id))
+                .Add("file", (string?)null)
+                .Add("objects", 0)
+                .Add("diagnostics", 1))));
+        return entries.OrderBy(e => e.CellId).Select(e => e.Json);
+    }
+
+    /// <summary>One placed object's entry (scene.json's objects, a cell file's objects): its frames, its file, its diagnostics.</summary>
+    internal static (JsonObj Json, bool Resolved) Describe(SceneObject placed, LandblockScene scene, ExportEngine engine,
         IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems,
         SortedDictionary<string, BspDumpResult> bspFiles, Dictionary<uint, SkippedItem> skipped)
     {

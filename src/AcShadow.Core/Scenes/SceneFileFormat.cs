@@ -21,5 +21,10 @@ public static class SceneFileFormat
         _ => "other",
     };
 
-    public static string PlacedByName(ScenePlacedBy by) => by == ScenePlacedBy.Object ? "object" : "building";
+    public static string PlacedByName(ScenePlacedBy by) => by switch
+    {
+        ScenePlacedBy.Object => "object",
+        ScenePlacedBy.Building => "building",
+        _ => "cell",
+    };
 }

@@ -7,6 +7,8 @@ public enum ScenePlacedBy
 {
     Object,
     Building,
+    /// <summary>An EnvCell's static objects (its stabs).</summary>
+    Cell,
 }
 
 /// <summary>What a placed id is: a Setup (0x02…), a bare GfxObj (0x01…), or something acshadow does not describe.</summary>

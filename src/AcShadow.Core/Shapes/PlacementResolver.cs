@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Shapes;
 

@@ -1,8 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Poses;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Shapes;
@@ -171,7 +171,7 @@ public static class ShadowShapeBuilder
         return false;
     }
 
-    /// <summary>The seed design's builder (§4.5), reproduced exactly so its divergences can be measured.</summary>
+    /// <summary>The design's union builder, reproduced exactly so its divergences can be measured.</summary>
     private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, ResolvedPose resolved, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();

@@ -1,4 +1,5 @@
 using AcShadow.Core.Poses;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Shapes;
 

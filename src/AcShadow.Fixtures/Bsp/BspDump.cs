@@ -1,7 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Bsp;
+namespace AcShadow.Fixtures.Bsp;
 
 /// <summary>
 /// One GfxObj's collision geometry, flattened: the physics polygons with their retail planes, the

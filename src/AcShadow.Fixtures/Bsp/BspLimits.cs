@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Bsp;
+namespace AcShadow.Fixtures.Bsp;
 
 /// <summary>
 /// Bounds no real PhysicsBSP comes near, so a corrupt or hostile tree cannot exhaust the stack or memory

@@ -1,8 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// The oracle: the same predicate as <see cref="BspSphereQuery"/> computed without descending the tree.

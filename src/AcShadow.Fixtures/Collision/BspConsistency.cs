@@ -1,7 +1,7 @@
 using System.Globalization;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// Checks that the tree's pruning can never hide a contact the brute force would see, and names what

@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>Which BSP query answers for a part: the retail tree traversal or the brute-force oracle.</summary>
 public enum BspEngine

@@ -1,8 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// The collision reference for one GfxObj: a static sphere overlap answered the way retail answers a

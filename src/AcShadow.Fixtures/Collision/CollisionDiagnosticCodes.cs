@@ -1,4 +1,6 @@
-namespace AcShadow.Core.Collision;
+using AcShadow.Fixtures.Shapes;
+
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>Diagnostic codes of the collision reference (stable; consumers filter on them).</summary>
 public static class CollisionDiagnosticCodes

@@ -1,9 +1,10 @@
 using System.Globalization;
 using System.Numerics;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// A <see cref="BspDump"/> checked and laid out in arrays for the sphere queries, whether the dump came

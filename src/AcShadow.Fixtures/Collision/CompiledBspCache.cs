@@ -1,6 +1,6 @@
-using AcShadow.Core.Bsp;
+using AcShadow.Fixtures.Bsp;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// Compiles each GfxObj's <see cref="BspDump"/> once, however many parts and models use it. The lookup

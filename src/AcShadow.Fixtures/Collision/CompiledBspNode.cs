@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// One node of a <see cref="CompiledBsp"/>. Internal nodes: splitting plane and children (−1 = absent).

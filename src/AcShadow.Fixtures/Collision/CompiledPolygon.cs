@@ -1,7 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// A physics polygon ready for sphere tests: its retail plane, its vertices in order, and per edge

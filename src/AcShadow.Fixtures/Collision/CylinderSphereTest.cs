@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// A vertical cylinder (base centre, radius, height) against a sphere, as retail's placement test does it

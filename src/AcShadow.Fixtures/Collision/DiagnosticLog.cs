@@ -1,6 +1,6 @@
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// Collects diagnostics, listing at most <see cref="PerCode"/> of each code and then one line saying how

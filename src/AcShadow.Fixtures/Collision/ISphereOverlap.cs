@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// "Does a sphere at this centre with this radius overlap the geometry?" in the geometry's own space.

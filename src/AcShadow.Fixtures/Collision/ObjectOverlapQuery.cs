@@ -1,7 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// "Does a query sphere at entity-space centre c with radius r overlap the object?" over a

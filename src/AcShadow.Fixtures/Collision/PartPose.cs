@@ -1,7 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>A posed part: where its GfxObj sits in entity space, how it is turned, its uniform scale.</summary>
 public readonly record struct PartPose(Vector3 Position, Quaternion Rotation, float Scale)

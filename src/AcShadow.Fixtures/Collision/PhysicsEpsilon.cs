@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// Retail's collision tolerance (PhysicsGlobals EPSILON = 0.0002 m). Splitting-plane reach, polygon contact

@@ -1,7 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// Does a sphere touch a polygon? The retail rule (CPolygon::polygon_hits_sphere_precise, reached from

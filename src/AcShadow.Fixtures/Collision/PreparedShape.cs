@@ -1,6 +1,7 @@
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// A shape the object query tests: where it came from, a readable name ("part 0 (GfxObj 0x010044B5)",

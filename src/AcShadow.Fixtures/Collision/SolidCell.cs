@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// The region a solid leaf stands for, written out as the path to it: for each internal ancestor, root

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>Sphere-against-sphere tests the queries share.</summary>
 internal static class SphereBounds

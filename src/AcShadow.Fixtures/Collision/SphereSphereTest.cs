@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>A Setup sphere against a query sphere, retail's placement test (CSphere::intersects_sphere): |Δ|² ≤ (R + r − ε)².</summary>
 public static class SphereSphereTest

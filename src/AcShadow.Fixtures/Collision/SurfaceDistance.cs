@@ -1,7 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// How far a point is from geometry, in metres: the measure "how close to the boundary" a probe is. Not a

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Collision;
+namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// Vector arithmetic written out in scalar float operations in a fixed order, so collision answers are

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Geometry;
+namespace AcShadow.Fixtures.Geometry;
 
 /// <summary>
 /// A polygon's plane as retail computes it (CPolygon::make_plane), in float32:

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcShadow.Core.Geometry;
+namespace AcShadow.Fixtures.Geometry;
 
 /// <summary>
 /// Rotating by a quaternion in explicit scalar float arithmetic, so results are bit-identical on every

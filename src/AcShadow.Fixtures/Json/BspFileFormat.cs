@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Json;
+namespace AcShadow.Fixtures.Json;
 
 /// <summary>Names shared by the BSP dump writer and reader.</summary>
 public static class BspFileFormat

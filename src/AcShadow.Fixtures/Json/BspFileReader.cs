@@ -1,9 +1,10 @@
 using System.Numerics;
 using System.Text.Json;
-using AcShadow.Core.Bsp;
-using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Fixtures.Json;
 
 /// <summary>
 /// Reads an "acshadow.bsp/1" file back into a <see cref="BspDump"/>, so consumers of the fixtures query
@@ -17,7 +18,15 @@ public static class BspFileReader
         var root = doc.RootElement;
         AcShadow.Fixtures.FormatCheck.Require(root, BspFileFormat.Format, "BSP file");
         if (!JsonIds.TryParse(Str(root, "gfxObjId"), out var id)) throw new FormatException("gfxObjId is not a hex id");
+        return ReadBody(root, id, Arr(root, "diagnostics").Select(e => e.GetString() ?? "").ToArray());
+    }
 
+    /// <summary>
+    /// The tree part of a BSP file (boundingSphere, vertices, polygons, nodes, stats), wherever it sits: a
+    /// cell file carries its PhysicsBSP in this shape too.
+    /// </summary>
+    public static BspDump ReadBody(JsonElement root, uint id, IReadOnlyList<string> diagnostics)
+    {
         var vertices = Arr(root, "vertices").Select(v => new BspVertex(Int(v, "id"), Vec(Prop(v, "position")))).ToArray();
         var polygons = Arr(root, "polygons").Select(p => new BspPolygon(
             Int(p, "id"),
@@ -31,7 +40,6 @@ public static class BspFileReader
             Int(s, "solidLeafCount"), Int(s, "maxDepth"),
             Arr(s, "degeneratePolygons").Select(e => e.GetInt32()).ToArray(),
             Arr(s, "nonPlanarPolygons").Select(e => e.GetInt32()).ToArray());
-        var diagnostics = Arr(root, "diagnostics").Select(e => e.GetString() ?? "").ToArray();
         return new BspDump(id, Sphere(Prop(root, "boundingSphere")), vertices, polygons, nodes, stats, diagnostics);
     }
 

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Fixtures.Json;
 
 /// <summary>Dat ids in the formats are "0x%08X" strings.</summary>
 public static class JsonIds

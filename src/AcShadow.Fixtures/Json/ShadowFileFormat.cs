@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Json;
+namespace AcShadow.Fixtures.Json;
 
 /// <summary>Names shared by the shadow file writer and reader.</summary>
 public static class ShadowFileFormat

@@ -1,10 +1,10 @@
 using System.Text.Json;
-using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
-using static AcShadow.Core.Json.BspFileReader;
+using static AcShadow.Fixtures.Json.BspFileReader;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Fixtures.Json;
 
 /// <summary>
 /// Reads the shapes and the pose of a shadow file back, so a consumer of the fixtures (or the collision

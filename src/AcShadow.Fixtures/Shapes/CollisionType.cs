@@ -1,4 +1,6 @@
-namespace AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>How a shape collides: a part's PhysicsBSP, a vertical cylinder, or a sphere.</summary>
 public enum CollisionType

@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Shapes;
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>Something the builder skipped or could not resolve. Reported, never fatal.</summary>
 public sealed record Diagnostic(string Code, string Message)

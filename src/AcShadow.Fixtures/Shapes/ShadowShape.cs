@@ -1,10 +1,10 @@
 using System.Numerics;
-using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Shapes;
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>
-/// One collision-bearing shape of an entity (seed design §4.2), in the entity's local frame.
+/// One collision-bearing shape of an entity, in the entity's local frame.
 /// BSP shapes: the part's GfxObj, pose and uniform scale, <see cref="Radius"/> = the BSP root sphere's
 /// radius × scale, <see cref="LocalSphere"/> = that sphere in entity space. Cylinder shapes: base centre,
 /// radius and <see cref="CylHeight"/>. Sphere shapes: centre and radius.

@@ -1,6 +1,4 @@
-using AcShadow.Fixtures.Shapes;
-
-namespace AcShadow.Core.Shapes;
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>
 /// Everything the builder decided for one Setup: the shapes, the placement frame, the pose the parts are

@@ -1,4 +1,6 @@
-namespace AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>Which rule set turns a Setup into collision shapes.</summary>
 public enum ShapePolicy
@@ -10,7 +12,7 @@ public enum ShapePolicy
     Retail,
 
     /// <summary>
-    /// The seed design's ShadowShapeBuilder (§4.5): every CylSphere, every Sphere when there are no
+    /// The seed design's ShadowShapeBuilder: every CylSphere, every Sphere when there are no
     /// CylSpheres (as a cylinder of height 2r), every part with a PhysicsBSP; placement Resting →
     /// Default → first available; no DefaultScale.
     /// </summary>

@@ -1,4 +1,6 @@
-namespace AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+
+namespace AcShadow.Fixtures.Shapes;
 
 /// <summary>What in the Setup a shape came from.</summary>
 public enum ShapeSource

@@ -1,7 +1,10 @@
 using System.Numerics;
-using System.Text.Json;
 using System.Text.Json.Serialization;
+using System.Text.Json;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Json;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Acdream;

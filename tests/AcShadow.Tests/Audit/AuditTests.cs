@@ -4,6 +4,8 @@ using AcShadow.Core.Audit;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Tests.Batch;
 using AcShadow.Tests.Support;
 

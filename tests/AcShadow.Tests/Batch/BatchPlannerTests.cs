@@ -30,7 +30,13 @@ public class BatchPlannerTests
         using var portal = SampleDat.OpenPortal();
         using var cell = DatDatabase.Open(new MemoryStream(SampleDat.CellBytes!), "client_cell_1.dat");
         var plan = BatchPlanner.Plan(new BatchSelection(false, false, null, 0xA9B4FFFE), portal, cell, []);
-        Assert.Equal([0x020019FFu, 0x02003000u], plan.Setups.Select(s => s.Id));
+        // The door and the static it places, and the Setup placed inside its ground-floor cell.
+        Assert.Equal([0x020019FFu, 0x02003000u, 0x02003300u], plan.Setups.Select(s => s.Id));
+        Assert.Equal([0xA9B40100u, 0xA9B40101u], plan.Scene!.Cells.Select(c => c.Id));
+        Assert.Empty(plan.Scene.MissingCells);
+        var objectsOnly = BatchPlanner.Plan(new BatchSelection(false, false, null, 0xA9B4FFFE) { Cells = false }, portal, cell, []);
+        Assert.Equal([0x020019FFu, 0x02003000u], objectsOnly.Setups.Select(s => s.Id));
+        Assert.Empty(objectsOnly.Scene!.Cells);
         Assert.All(plan.Setups, s => Assert.Equal(SelectionSource.Landblock, s.From));
         Assert.NotNull(plan.Scene);
         Assert.Equal(4, plan.Scene!.Objects.Count);

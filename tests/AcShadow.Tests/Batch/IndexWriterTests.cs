@@ -3,6 +3,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.Batch;
 

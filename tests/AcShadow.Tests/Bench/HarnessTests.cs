@@ -10,6 +10,7 @@ namespace AcShadow.Tests.Bench;
 /// bench.json carries every figure, ratio and check. Its timings are not asserted (speed is measured by
 /// scripts/bench.sh, never by a test).
 /// </summary>
+[Trait("Speed", "Slow")]
 public sealed class HarnessTests
 {
     private static readonly string[] Measured = ["floor", "naive", "batch", "batch --incremental"];

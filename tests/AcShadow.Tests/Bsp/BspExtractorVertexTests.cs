@@ -1,6 +1,8 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Bsp;
 

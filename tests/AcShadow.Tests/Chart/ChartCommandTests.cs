@@ -29,12 +29,12 @@ public class ChartCommandTests
     public void A_landblock_charts_the_setups_and_bare_gfxobjs_it_places()
     {
         // The sample landblock places the door and the multi-part static (Setups), a bare column and the
-        // house (GfxObjs): the same selection batch exports for the scene.
+        // house (GfxObjs), and a Setup inside the cottage's ground-floor cell: the same selection batch exports.
         using var dir = new TempDir();
         var run = CliRun.Of("chart", "--landblock", "0xA9B4", "--spacing", "1", "--out", dir.Path, "--quiet");
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains("4 object(s) (2 Setup(s), 2 bare GfxObj(s))", run.Out);
-        foreach (var id in new[] { "0x020019FF", "0x02003000", "0x01003002", "0x01005000" })
+        Assert.Contains("5 object(s) (3 Setup(s), 2 bare GfxObj(s))", run.Out);
+        foreach (var id in new[] { "0x020019FF", "0x02003000", "0x02003300", "0x01003002", "0x01005000" })
         {
             Assert.Contains($"failure-map-{id}.svg", dir.Files());
             var rows = File.ReadAllLines(Path.Combine(dir.Path, "chart.csv")).Count(l => l.StartsWith(id + ",", StringComparison.Ordinal));

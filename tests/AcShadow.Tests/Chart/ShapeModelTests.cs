@@ -1,9 +1,11 @@
 using System.Numerics;
-using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
-using AcShadow.Core.Collision;
+using AcShadow.Core.Chart;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Chart;

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcShadow.Cli;
+using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Commands;
 using AcShadow.Cli.Conventions;
 using AcShadow.Fixtures;

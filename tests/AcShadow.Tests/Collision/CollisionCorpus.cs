@@ -1,9 +1,10 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Forge;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Forge.Bsp;
+using AcShadow.Forge;
 
 namespace AcShadow.Tests.Collision;
 

@@ -1,8 +1,11 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.Collision;
 

@@ -1,5 +1,5 @@
 using System.Diagnostics;
-using AcShadow.Core.Collision;
+using AcShadow.Fixtures.Collision;
 using Xunit.Abstractions;
 
 namespace AcShadow.Tests.Collision;

@@ -1,7 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.Collision;
 

@@ -1,13 +1,17 @@
 using System.Numerics;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Dat;
 
 /// <summary>
-/// Setups whose placement frames carry animation hooks. The Setup bytes are spelled out by hand here (not by
-/// Setup.Write), written into a real dat and read back, so a hook read one byte short or long shows up as wrong
-/// CylSpheres, Spheres, Height or Radius.
+/// Setups whose placement frames carry animation hooks. Every hook's bytes below were worked out by hand from
+/// the public layout (DatReaderWriter's dats.xml AnimationHook typeswitch, ACE's AnimationHooks classes):
+/// <c>uint type, int direction</c>, then the payload, and no padding. Floats are spelled as their IEEE bits
+/// (1.0 = 0x3F800000 → 00 00 80 3F). The Setup around them is laid out field by field here too (not by
+/// Setup.Write), written into a real dat and read back, so a hook read one byte short or long shows up as a
+/// wrong hook count, wrong CylSpheres, Spheres, Height or Radius.
 /// </summary>
 public class AnimationHookTests
 {
@@ -19,40 +23,70 @@ public class AnimationHookTests
     private const float Height = 1.875f;
     private const float Radius = 1.0625f;
 
-    /// <summary>One hook: its type and direction, the payload, and the zero padding to a multiple of 4.</summary>
-    private sealed record RawHook(uint Type, int Direction, byte[] Payload);
-
-    /// <summary>Payload sizes per type, as the layouts spell them (Frame = 3 floats + 4 floats = 28 bytes).</summary>
-    private static readonly Dictionary<AnimationHookType, int> PayloadSizes = new()
+    /// <summary>One hook as stored: type, direction and payload, in hex (spaces ignored).</summary>
+    private sealed record RawHook(string Hex)
     {
-        [AnimationHookType.NoOp] = 0,
-        [AnimationHookType.Sound] = 4,
-        [AnimationHookType.SoundTable] = 4,
-        [AnimationHookType.Attack] = 4 + 6 * 4,
-        [AnimationHookType.AnimationDone] = 0,
-        [AnimationHookType.ReplaceObject] = 1 + 2,
-        [AnimationHookType.Ethereal] = 4,
-        [AnimationHookType.TransparentPart] = 4 + 3 * 4,
-        [AnimationHookType.Luminous] = 3 * 4,
-        [AnimationHookType.LuminousPart] = 4 + 3 * 4,
-        [AnimationHookType.Diffuse] = 3 * 4,
-        [AnimationHookType.DiffusePart] = 4 + 3 * 4,
-        [AnimationHookType.Scale] = 2 * 4,
-        [AnimationHookType.CreateParticle] = 4 + 4 + 28 + 4,
-        [AnimationHookType.DestroyParticle] = 4,
-        [AnimationHookType.StopParticle] = 4,
-        [AnimationHookType.NoDraw] = 4,
-        [AnimationHookType.DefaultScript] = 0,
-        [AnimationHookType.DefaultScriptPart] = 4,
-        [AnimationHookType.CallPES] = 4 + 4,
-        [AnimationHookType.Transparent] = 3 * 4,
-        [AnimationHookType.SoundTweaked] = 4 + 3 * 4,
-        [AnimationHookType.SetOmega] = 3 * 4,
-        [AnimationHookType.TextureVelocity] = 2 * 4,
-        [AnimationHookType.TextureVelocityPart] = 4 + 2 * 4,
-        [AnimationHookType.SetLight] = 4,
-        [AnimationHookType.CreateBlockingParticle] = 4 + 4 + 28 + 4,
+        public byte[] Bytes => Convert.FromHexString(Hex.Replace(" ", ""));
+        public uint Type => BitConverter.ToUInt32(Bytes, 0);
+        public int Direction => BitConverter.ToInt32(Bytes, 4);
+        public byte[] Payload => Bytes[8..];
+    }
+
+    /// <summary>
+    /// One hand-worked hook of every type: the bytes, and the field values they hold (as
+    /// <see cref="AnimationHook.FieldText"/> writes them). Direction: 01000000 forward, 00000000 both,
+    /// FFFFFFFF backward.
+    /// </summary>
+    public static readonly TheoryData<string, string, string> EveryType = new()
+    {
+        { "NoOp", "00000000 01000000", "" },
+        { "Sound", "01000000 01000000 2301000A", "soundId=0x0A000123" },
+        { "SoundTable", "02000000 00000000 07000000", "soundType=7" },
+        { "Attack", "03000000 FFFFFFFF 02000000 0000803F 000000BF 0000003F 000000BF 00000040 0000C03F",
+            "partIndex=2 leftX=1 leftY=-0.5 rightX=0.5 rightY=-0.5 radius=2 height=1.5" },
+        { "AnimationDone", "04000000 01000000", "" },
+        // ushort part index 300 = 0x012C, then GfxObj 0x01000456 as the short form: offset 0x0456 in one ushort.
+        { "ReplaceObject", "05000000 01000000 2C01 5604", "partIndex=300 gfxObjId=0x01000456" },
+        { "Ethereal", "06000000 01000000 01000000", "ethereal=true" },
+        { "TransparentPart", "07000000 01000000 01000000 00000000 0000803F 0000003F", "partIndex=1 start=0 end=1 time=0.5" },
+        { "Luminous", "08000000 00000000 0000803F 00000000 00000040", "start=1 end=0 time=2" },
+        { "LuminousPart", "09000000 00000000 03000000 00000000 0000803E 0000803F", "partIndex=3 start=0 end=0.25 time=1" },
+        { "Diffuse", "0A000000 01000000 0000003F 0000803F 00004040", "start=0.5 end=1 time=3" },
+        { "DiffusePart", "0B000000 FFFFFFFF 00010000 0000803F 00000000 00008040", "partIndex=256 start=1 end=0 time=4" },
+        { "Scale", "0C000000 01000000 0000C03F 0000003F", "end=1.5 time=0.5" },
+        // Emitter info 0x32000010, part 1, Frame (origin 0.5, 0, 1; orientation W 1, X, Y, Z 0), emitter 7.
+        { "CreateParticle", "0D000000 01000000 10000032 01000000 0000003F 00000000 0000803F 0000803F 00000000 00000000 00000000 07000000",
+            "emitterInfoId=0x32000010 partIndex=1 offset=[0.5, 0, 1]@[1, 0, 0, 0] emitterId=7" },
+        { "DestroyParticle", "0E000000 00000000 07000000", "emitterId=7" },
+        { "StopParticle", "0F000000 00000000 08000000", "emitterId=8" },
+        { "NoDraw", "10000000 01000000 00000000", "noDraw=false" },
+        { "DefaultScript", "11000000 00000000", "" },
+        { "DefaultScriptPart", "12000000 01000000 2C010000", "partIndex=300" },
+        { "CallPES", "13000000 01000000 05000033 0000003F", "scriptId=0x33000005 pause=0.5" },
+        { "Transparent", "14000000 FFFFFFFF 00000000 0000803F 00000040", "start=0 end=1 time=2" },
+        { "SoundTweaked", "15000000 01000000 0002000A 0000003F 0000803E 0000803F", "soundId=0x0A000200 priority=0.5 probability=0.25 volume=1" },
+        { "SetOmega", "16000000 00000000 00000000 00000000 0000C03F", "axis=[0, 0, 1.5]" },
+        { "TextureVelocity", "17000000 01000000 0000003F 000080BF", "uSpeed=0.5 vSpeed=-1" },
+        { "TextureVelocityPart", "18000000 01000000 2C010000 0000803E 00000000", "partIndex=300 uSpeed=0.25 vSpeed=0" },
+        { "SetLight", "19000000 00000000 01000000", "lightsOn=true" },
+        // ACE's layout (CreateParticle's payload): emitter info 0x32000011, part 0, identity Frame, emitter 8.
+        { "CreateBlockingParticle", "1A000000 00000000 11000032 00000000 00000000 00000000 00000000 0000803F 00000000 00000000 00000000 08000000",
+            "emitterInfoId=0x32000011 partIndex=0 offset=[0, 0, 0]@[1, 0, 0, 0] emitterId=8" },
     };
+
+    /// <summary>ReplaceObject, long form: first ushort 0x8001 (top bit set, offset bits 16..29 = 1), then 0x2345.</summary>
+    private static readonly RawHook ReplaceLong = new("05000000 00000000 0200 0180 4523"); // part 2 → GfxObj 0x01012345
+
+    /// <summary>ReplaceObject, short form with the largest short offset, 0x7FFF.</summary>
+    private static readonly RawHook ReplaceShortMax = new("05000000 FFFFFFFF 0000 FF7F"); // part 0 → GfxObj 0x01007FFF
+
+    /// <summary>
+    /// ReplaceObject, long form of a small offset (0x8000 | 0, then 0x4000): DatReaderWriter writes offsets from
+    /// 0x4000 up this way, and every reader takes it.
+    /// </summary>
+    private static readonly RawHook ReplaceLongSmall = new("05000000 01000000 FF01 0080 0040"); // part 511 → GfxObj 0x01004000
+
+    private static readonly RawHook Sound = new("01000000 01000000 2301000A");
 
     private static byte[] Bytes(Action<DatBinaryWriter> write)
     {
@@ -60,41 +94,6 @@ public class AnimationHookTests
         write(w);
         return w.ToArray();
     }
-
-    private static byte[] ParticlePayload(uint emitterInfo, uint part, uint emitterId) => Bytes(w =>
-    {
-        w.WriteUInt32(emitterInfo);
-        w.WriteUInt32(part);
-        w.WriteVector3(new Vector3(0.1f, 0.2f, 0.3f));
-        w.WriteQuaternion(Quaternion.Identity);
-        w.WriteUInt32(emitterId);
-    });
-
-    /// <summary>ReplaceObject, short form: part index byte, then the GfxObj id minus 0x01000000 in one ushort.</summary>
-    private static readonly byte[] ReplaceShort = [2, 0x56, 0x04]; // part 2 → GfxObj 0x01000456
-
-    /// <summary>ReplaceObject, long form: top bit of the first ushort set, id bits 16..29 there, bits 0..15 in a second ushort.</summary>
-    private static readonly byte[] ReplaceLong = [1, 0x01, 0x80, 0x45, 0x23]; // part 1 → GfxObj 0x01012345
-
-    private static readonly RawHook[] DefaultHooks =
-    [
-        new(1, 1, Bytes(w => w.WriteUInt32(0x0A000123))),                 // Sound
-        new(5, 0, ReplaceShort),                                          // ReplaceObject, 2-byte id: 11 bytes + 1 pad
-        new(6, -1, Bytes(w => w.WriteUInt32(1))),                         // Ethereal
-        new(5, 1, ReplaceLong),                                           // ReplaceObject, 4-byte id: 13 bytes + 3 pad
-        new(13, 1, ParticlePayload(0x32000010, 1, 7)),                    // CreateParticle
-    ];
-
-    private static readonly RawHook[] RestingHooks =
-    [
-        new(5, -1, ReplaceLong),                                          // first hook of the frame is the unaligned one
-        new(26, 0, ParticlePayload(0x32000011, 0, 8)),                    // CreateBlockingParticle
-        new(4, 0, []),                                                    // AnimationDone
-        new(3, 1, Bytes(w => { w.WriteUInt32(1); for (var i = 0; i < 6; i++) w.WriteSingle(i * 0.5f); })), // Attack
-        new(22, 0, Bytes(w => w.WriteVector3(new Vector3(0, 0, 1.5f)))), // SetOmega
-        new(21, 1, Bytes(w => { w.WriteUInt32(0x0A000200); w.WriteSingle(0.5f); w.WriteSingle(0.9f); w.WriteSingle(0.8f); })), // SoundTweaked
-        new(5, 0, ReplaceShort),                                          // and a short one last, right before the CylSpheres
-    ];
 
     /// <summary>A two-part Setup laid out field by field, as the dat stores it.</summary>
     private static byte[] SetupBytes(params (uint Key, RawHook[] Hooks)[] placements) => Bytes(w =>
@@ -113,13 +112,7 @@ public class AnimationHookTests
             Frame.Identity.Write(w);
             new Frame(new Vector3(0, 0, 1), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 0.5f)).Write(w);
             w.WriteUInt32((uint)hooks.Length);
-            foreach (var hook in hooks)
-            {
-                w.WriteUInt32(hook.Type);
-                w.WriteInt32(hook.Direction);
-                w.WriteBytes(hook.Payload);
-                for (var pad = (8 + hook.Payload.Length) % 4; pad is > 0 and < 4; pad++) w.WriteByte(0);
-            }
+            foreach (var hook in hooks) w.WriteBytes(hook.Bytes);
         }
         w.WriteUInt32(2);
         Cyl0.Write(w);
@@ -164,57 +157,57 @@ public class AnimationHookTests
         }
     }
 
-    [Fact]
-    public void Hooks_of_several_types_are_stepped_over_byte_exactly()
+    [Theory]
+    [MemberData(nameof(EveryType))]
+    public void Each_hook_type_reads_its_hand_worked_bytes_exactly(string type, string hex, string fields)
     {
-        using var dat = Dat(SetupBytes((Placement.Default, DefaultHooks), (Placement.Resting, RestingHooks)));
+        // The hook under test, then one more, in two placements: the second hook and the fields after the
+        // placements only read right when the first hook took exactly its bytes.
+        RawHook[] hooks = [new(hex), Sound];
+        var original = SetupBytes((Placement.Default, hooks), (Placement.Resting, [new(hex)]));
+        using var dat = Dat(original);
+
         var setup = dat.ReadSetup(SetupId)!;
 
+        Assert.Equal(Enum.Parse<AnimationHookType>(type), setup.PlacementFrames[0].Hooks[0].Type);
+        AssertHooks(hooks, setup.PlacementFrames[0].Hooks);
+        AssertHooks([new(hex)], setup.PlacementFrames[1].Hooks);
+        Assert.Equal(fields, setup.PlacementFrames[0].Hooks[0].FieldText());
         AssertFieldsAfterHooks(setup);
-        Assert.Equal([Placement.Default, Placement.Resting], setup.PlacementFrames.Select(p => p.Placement));
-        AssertHooks(DefaultHooks, setup.PlacementFrames[0].Hooks);
-        AssertHooks(RestingHooks, setup.PlacementFrames[1].Hooks);
-        Assert.Equal(new Vector3(0, 0, 1), setup.FindPlacement(Placement.Resting)!.Frames[1].Origin);
+        Assert.Equal(original, Bytes(setup.Write));
     }
 
     [Fact]
-    public void Both_forms_of_the_ReplaceObject_part_id_are_kept()
+    public void Every_hook_type_has_a_hand_worked_case()
     {
-        using var dat = Dat(SetupBytes((Placement.Default, DefaultHooks)));
-        var hooks = dat.ReadSetup(SetupId)!.PlacementFrames[0].Hooks.Where(h => h.Type == AnimationHookType.ReplaceObject).ToArray();
-
-        Assert.Equal(2, hooks.Length);
-        Assert.Equal(ReplaceShort, hooks[0].Payload.ToArray());
-        Assert.Equal(ReplaceLong, hooks[1].Payload.ToArray());
+        var covered = EveryType.Select(row => Enum.Parse<AnimationHookType>((string)row[0])).Order();
+        Assert.Equal(Enum.GetValues<AnimationHookType>().Order(), covered);
     }
 
     [Fact]
-    public void Every_known_hook_type_has_the_documented_length()
+    public void Both_forms_of_the_ReplaceObject_id_are_read_and_the_next_hook_follows_unpadded()
     {
-        Assert.Equal(Enum.GetValues<AnimationHookType>().Order(), PayloadSizes.Keys.Order());
-        var all = PayloadSizes
-            .Select(kv => new RawHook((uint)kv.Key, 1, kv.Key == AnimationHookType.ReplaceObject
-                ? ReplaceShort
-                : Enumerable.Range(1, kv.Value).Select(b => (byte)b).ToArray()))
-            .ToArray();
+        // A long form leaves the next hook 2 bytes off a 4-byte boundary: it is read from there, not aligned.
+        RawHook[] hooks = [ReplaceLong, Sound, ReplaceShortMax, ReplaceLongSmall, Sound];
+        using var dat = Dat(SetupBytes((Placement.Resting, hooks)));
+        var read = dat.ReadSetup(SetupId)!.PlacementFrames[0].Hooks;
 
-        using var dat = Dat(SetupBytes((Placement.Resting, all)));
-        var setup = dat.ReadSetup(SetupId)!;
-
-        AssertHooks(all, setup.PlacementFrames[0].Hooks);
-        AssertFieldsAfterHooks(setup);
+        AssertHooks(hooks, read);
+        Assert.Equal("partIndex=2 gfxObjId=0x01012345", read[0].FieldText());
+        Assert.Equal("partIndex=0 gfxObjId=0x01007FFF", read[2].FieldText());
+        Assert.Equal("partIndex=511 gfxObjId=0x01004000", read[3].FieldText());
     }
 
     [Fact]
     public void A_setup_with_hooks_writes_back_the_bytes_it_was_read_from()
     {
-        var original = SetupBytes((Placement.Default, DefaultHooks), (Placement.Resting, RestingHooks), (0x11u, []));
+        var every = EveryType.Select(row => new RawHook((string)row[1])).ToArray();
+        var original = SetupBytes((Placement.Default, every), (Placement.Resting, [ReplaceLong, ReplaceShortMax]), (0x11u, []));
         using var dat = Dat(original);
         var setup = dat.ReadSetup(SetupId)!;
 
-        var written = Bytes(setup.Write);
-
-        Assert.Equal(original, written);
+        Assert.Equal(original, Bytes(setup.Write));
+        AssertFieldsAfterHooks(setup);
     }
 
     [Fact]
@@ -222,9 +215,9 @@ public class AnimationHookTests
     {
         var hooks = new[]
         {
-            new AnimationHook(AnimationHookType.ReplaceObject, -1, ReplaceLong),
-            new AnimationHook(AnimationHookType.NoDraw, 0, Bytes(w => w.WriteUInt32(1))),
-            new AnimationHook(AnimationHookType.ReplaceObject, 1, ReplaceShort),
+            new AnimationHook(AnimationHookType.ReplaceObject, -1, ReplaceLong.Payload),
+            new AnimationHook(AnimationHookType.NoDraw, 0, [1, 0, 0, 0]),
+            new AnimationHook(AnimationHookType.ReplaceObject, 1, ReplaceShortMax.Payload),
         };
         var placement = new PlacementFrame(Placement.Resting, [Frame.Identity]) { Hooks = hooks };
         var setup = new Setup(SetupId, SetupFlags.None, [0x01000456], [], [], [placement], [Cyl0, Cyl1], [Sphere0],
@@ -250,7 +243,7 @@ public class AnimationHookTests
     [InlineData(0xFFFFFFFFu, "0xFFFFFFFF")]
     public void An_unknown_hook_type_is_refused_naming_setup_placement_and_type(uint type, string hex)
     {
-        RawHook[] hooks = [new(1, 1, Bytes(w => w.WriteUInt32(5))), new(type, 0, Bytes(w => w.WriteUInt32(0)))];
+        RawHook[] hooks = [Sound, new($"{Convert.ToHexString(BitConverter.GetBytes(type))} 00000000 00000000")];
         using var dat = Dat(SetupBytes((Placement.Default, []), (Placement.Resting, hooks)));
 
         var e = Assert.Throws<DatFormatException>(() => dat.ReadSetup(SetupId));
@@ -264,7 +257,8 @@ public class AnimationHookTests
     [Fact]
     public void A_setup_cut_inside_a_hook_payload_is_refused_not_misread()
     {
-        var bytes = SetupBytes((Placement.Resting, [new(13, 1, ParticlePayload(0x32000010, 1, 7))]));
+        var particle = new RawHook((string)EveryType.Single(row => (string)row[0] == "CreateParticle")[1]);
+        var bytes = SetupBytes((Placement.Resting, [particle]));
         var hookStart = 4 * 3 + 8 + 4 * 3 + 4 + 2 * 28 + 4;
         using var dat = Dat(bytes[..(hookStart + 8 + 20)]);
 
@@ -272,11 +266,42 @@ public class AnimationHookTests
     }
 
     [Fact]
+    public void A_setup_cut_inside_a_long_form_id_is_refused_not_misread()
+    {
+        var bytes = SetupBytes((Placement.Resting, [ReplaceLong]));
+        var hookStart = 4 * 3 + 8 + 4 * 3 + 4 + 2 * 28 + 4;
+        using var dat = Dat(bytes[..(hookStart + 8 + 4)]); // part index and the first ushort of the id, not the second
+
+        Assert.Throws<DatFormatException>(() => dat.ReadSetup(SetupId));
+    }
+
+    [Fact]
     public void A_hook_whose_payload_does_not_fit_its_type_cannot_be_made()
     {
-        Assert.Throws<ArgumentException>(() => new AnimationHook(AnimationHookType.ReplaceObject, 0, [1, 0x01, 0x80])); // long form, 2 bytes short
-        Assert.Throws<ArgumentException>(() => new AnimationHook(AnimationHookType.ReplaceObject, 0, [1, 0x01, 0x00, 0, 0])); // short form, 2 bytes long
+        Assert.Throws<ArgumentException>(() => new AnimationHook(AnimationHookType.ReplaceObject, 0, [0x02, 0x00, 0x01, 0x80])); // long form, 2 bytes short
+        Assert.Throws<ArgumentException>(() => new AnimationHook(AnimationHookType.ReplaceObject, 0, [0x02, 0x00, 0x56, 0x04, 0, 0])); // short form, 2 bytes long
+        Assert.Throws<ArgumentException>(() => new AnimationHook(AnimationHookType.ReplaceObject, 0, [0x02, 0x56, 0x04])); // the old byte-index layout
         Assert.Throws<ArgumentException>(() => new AnimationHook(AnimationHookType.Sound, 0, [1, 2, 3]));
         Assert.Throws<ArgumentException>(() => new AnimationHook((AnimationHookType)27, 0, []));
     }
+
+    [Theory]
+    [InlineData(0x01000000u, "0000")]
+    [InlineData(0x01007FFFu, "FF7F")]
+    [InlineData(0x01008000u, "00800080")]
+    [InlineData(0x01012345u, "01804523")]
+    [InlineData(0x40FFFFFFu, "FFBFFFFF")]
+    public void Packed_GfxObj_ids_are_written_as_the_public_readers_read_them(uint id, string hex)
+    {
+        var bytes = Bytes(w => w.WritePackedDataId(id, AnimationHookField.GfxObjBase));
+
+        Assert.Equal(hex, Convert.ToHexString(bytes));
+        Assert.Equal(id, new DatBinaryReader(bytes).ReadPackedDataId(AnimationHookField.GfxObjBase));
+    }
+
+    [Theory]
+    [InlineData(0x00FFFFFFu)]
+    [InlineData(0x41000000u)]
+    public void A_GfxObj_id_the_packed_form_cannot_hold_is_refused(uint id) =>
+        Assert.Throws<ArgumentOutOfRangeException>(() => Bytes(w => w.WritePackedDataId(id, AnimationHookField.GfxObjBase)));
 }

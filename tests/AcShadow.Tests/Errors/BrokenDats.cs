@@ -1,6 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Errors;

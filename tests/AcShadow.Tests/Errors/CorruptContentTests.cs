@@ -1,10 +1,13 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Json;
 using AcShadow.Tests.Support;
 using static AcShadow.Tests.Errors.BrokenDats;
 

@@ -1,5 +1,6 @@
 using System.Diagnostics;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Forge;
 using AcShadow.Tests.Support;
 
@@ -10,6 +11,7 @@ namespace AcShadow.Tests.Errors;
 /// leaves only whole files, no index.json, and temporary files that neither verify nor the next run
 /// mistake for output; the next run removes them and completes the folder.
 /// </summary>
+[Trait("Speed", "Slow")]
 public class InterruptedBatchTests
 {
     [Fact]

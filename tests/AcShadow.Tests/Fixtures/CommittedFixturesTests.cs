@@ -10,12 +10,7 @@ namespace AcShadow.Tests.Fixtures;
 /// </summary>
 public class CommittedFixturesTests
 {
-    internal static string RepositoryFixtures()
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-            if (File.Exists(Path.Combine(dir.FullName, "AcShadow.sln"))) return Path.Combine(dir.FullName, "fixtures");
-        throw new InvalidOperationException($"no AcShadow.sln above {AppContext.BaseDirectory}");
-    }
+    internal static string RepositoryFixtures() => Path.Combine(RepositoryRoot.Path, "fixtures");
 
     [Fact]
     public void Committed_fixtures_match_a_fresh_regeneration()

@@ -1,7 +1,9 @@
 using System.Numerics;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Fixtures;

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Support;
 

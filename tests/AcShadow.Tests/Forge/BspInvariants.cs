@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Bsp;
 
 namespace AcShadow.Tests.Forge;
@@ -49,6 +50,8 @@ public static class BspInvariants
             {
                 if (node.Type != BspNodeTypes.ForChildren(node.Pos is not null, node.Neg is not null))
                     problems.Add($"node tag {node.Type.Tag()} does not match its children");
+                // Real physics BSPs give every internal node both children (retail's solid query follows both unchecked).
+                if (node.Pos is null || node.Neg is null) problems.Add($"internal node {node.Type.Tag()} has only one child");
                 if (!planes.Contains(node.SplittingPlane)) problems.Add($"node plane {node.SplittingPlane} is no polygon's retail plane");
                 below = [];
                 if (node.Pos is not null) below.UnionWith(Visit(node.Pos, depth + 1));

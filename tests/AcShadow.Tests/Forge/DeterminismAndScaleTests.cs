@@ -5,6 +5,7 @@ using AcShadow.Forge.Spec;
 
 namespace AcShadow.Tests.Forge;
 
+[Trait("Speed", "Slow")]
 public sealed class DeterminismAndScaleTests(SmallScaleFixture fixture) : IClassFixture<SmallScaleFixture>
 {
     [Fact]

@@ -1,13 +1,13 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
-using AcShadow.Forge;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Bsp;
 using AcShadow.Forge.Geometry;
 using AcShadow.Forge.Spec;
+using AcShadow.Forge;
 
 namespace AcShadow.Tests.Forge;
 
@@ -96,7 +96,9 @@ public sealed class PhysicsBspBuilderTests
         var leaves = BspInvariants.Leaves(closed.PhysicsBsp!).ToArray();
         Assert.Contains(leaves, l => l.Solid != 0);
         Assert.All(leaves.Where(l => l.Solid != 0), l => Assert.NotEmpty(l.Polygons));
-        Assert.DoesNotContain(leaves, l => l.Polygons.Count == 0);
+        // Empty sides are leaves too (every internal node has both children), never solid.
+        Assert.Contains(leaves, l => l.Polygons.Count == 0);
+        Assert.All(leaves.Where(l => l.Polygons.Count == 0), l => Assert.Equal(0, l.Solid));
 
         var open = Gfx(new MeshBuilder().Grid((i, j) => new(i, j, 0), 6, 6).Grid((i, k) => new(i, 3, k), 6, 2));
         Assert.DoesNotContain(BspInvariants.Leaves(open.PhysicsBsp!), l => l.Solid != 0);
@@ -311,7 +313,7 @@ public sealed class PhysicsBspBuilderTests
     {
         var (portal, _) = SampleDats.Build();
         using var dat = DatDatabase.Open(new MemoryStream(portal), "sample_portal.dat");
-        var trees = dat.ListIds(DatObjectKind.GfxObj).Select(id => BspExtractor.Extract(dat.ReadGfxObj(id)!)).OfType<AcShadow.Core.Bsp.BspDump>()
+        var trees = dat.ListIds(DatObjectKind.GfxObj).Select(id => BspExtractor.Extract(dat.ReadGfxObj(id)!)).OfType<AcShadow.Fixtures.Bsp.BspDump>()
             .Select(CompiledBsp.Compile).ToArray();
         Assert.True(trees.Length >= 10);
         Assert.DoesNotContain(trees.SelectMany(t => t.Diagnostics), d => d.Code == CollisionDiagnosticCodes.InertSolidLeaf);

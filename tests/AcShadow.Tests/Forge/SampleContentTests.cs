@@ -1,9 +1,9 @@
-using AcShadow.Core.Catalog;
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Dat;
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Core.Dat;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge;
 using static AcShadow.Forge.SampleSpecAuthor;
 

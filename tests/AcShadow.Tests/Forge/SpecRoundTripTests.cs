@@ -1,7 +1,9 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Forge;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge.Spec;
+using AcShadow.Forge;
 
 namespace AcShadow.Tests.Forge;
 

@@ -3,10 +3,11 @@ using AcShadow.Fuzz;
 namespace AcShadow.Tests.Fuzz;
 
 /// <summary>
-/// CI's fixed-seed campaign (issue 6): 2,000 damaged copies of the sample dats, each run through `dump`
+/// CI's fixed-seed campaign: 2,000 damaged copies of the sample dats, each run through `dump`
 /// and `batch`; every one must end with a documented exit code, a "corrupt dat" message naming the object
 /// when one is damaged, whole output files, and within the time and memory limits.
 /// </summary>
+[Trait("Speed", "Slow")]
 public class FuzzCampaignTests
 {
     public const long Seed = 20261122;

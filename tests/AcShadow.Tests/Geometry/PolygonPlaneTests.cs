@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Geometry;
 

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Tests.Json;
 

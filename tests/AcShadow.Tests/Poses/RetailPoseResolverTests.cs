@@ -44,7 +44,7 @@ public class RetailPoseResolverTests
     {
         var setup = OnePart with { DefaultMotionTable = 0x09000F00 };
         var (pose, diagnostics) = Resolve(setup, new Motions(Table(0x09000F00, new AnimData(0x03000F00, low, high, rate)), Steps(0x03000F00, 10)));
-        Assert.Empty(diagnostics.Where(d => d.Code != PoseDiagnosticCodes.PoseMoved));
+        Assert.DoesNotContain(diagnostics, d => d.Code != PoseDiagnosticCodes.PoseMoved);
         Assert.Equal(expected, pose.Provenance.Frame);
         Assert.Equal(new Vector3(expected, 0, 0), pose.MotionFrames![0].Origin);
     }

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Text.Json;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Scenes;
@@ -15,7 +16,8 @@ public class SceneExportTests
     [Fact]
     public void A_scene_writes_only_what_it_places_each_once()
     {
-        var (run, dir) = RunBatch("--landblock", "0xA9B4");
+        // Objects only: the cells' own files are CellExportTests' business.
+        var (run, dir) = RunBatch("--landblock", "0xA9B4", "--no-cells");
         using (dir)
         {
             Assert.Equal(0, run.ExitCode);
@@ -138,7 +140,7 @@ public class SceneExportTests
     {
         using var portal = SampleDat.OpenPortal();
         var gfx = portal.ReadGfxObj(0x01003002)!;
-        var set = BareGfxObjShape.Build(gfx, portal.ReadGfxObj, new Core.Shapes.ShapeBuildOptions(Core.Shapes.ShapePolicy.Retail, 2f));
+        var set = BareGfxObjShape.Build(gfx, portal.ReadGfxObj, new Core.Shapes.ShapeBuildOptions(ShapePolicy.Retail, 2f));
         var shape = Assert.Single(set.Shapes);
         Assert.Equal(0x01003002u, shape.GfxObjId);
         Assert.Equal(2f, shape.Scale);

@@ -25,6 +25,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             Run("dump", "--setup", "0x020019FF", "--format", "both", "--out", Path.Combine(Dir.Path, "dump"));
             Run("batch", "--doors", "--all", "--landblock", "0xA9B4", "--format", "both", "--out", Path.Combine(Dir.Path, "batch"), "--quiet");
             Run("audit", "--doors", "--chart", "--format", "json", "--out", Path.Combine(Dir.Path, "audit.json"));
+            Run("doctor", "--out", Path.Combine(Dir.Path, "doctor.json"));
         }
 
         private static void Run(params string[] args)
@@ -57,9 +58,12 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             _ when name.EndsWith(".shadow.json") => "shadow",
             _ when name.EndsWith(".bsp.json") => "bsp",
             _ when name.EndsWith(".gfxobj.json") => "acdream",
+            _ when name.EndsWith(".cell.json") => "cell",
+            _ when Path.GetFileName(Path.GetDirectoryName(path)) == "cells" => "acdream-cell",
             "scene.json" => "scene",
             "index.json" => "index",
             "audit.json" => "audit",
+            "doctor.json" => "doctor",
             _ => throw new InvalidOperationException($"no format for {path}"),
         };
         return FileFormats.All.Single(f => f.Name == kind);
@@ -75,7 +79,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             var file = files.Single(f => JsonDocument.Parse(File.ReadAllText(f)).RootElement.GetProperty("$id").GetString() == format.SchemaId);
             using var doc = JsonDocument.Parse(File.ReadAllText(file));
             Assert.Equal("https://json-schema.org/draft/2020-12/schema", doc.RootElement.GetProperty("$schema").GetString());
-            if (format.Name == "acdream")
+            if (format.Name is "acdream" or "acdream-cell")
                 Assert.False(doc.RootElement.GetProperty("properties").TryGetProperty("format", out _));
             else
                 Assert.Equal(format.Format, doc.RootElement.GetProperty("properties").GetProperty("format").GetProperty("const").GetString());
@@ -87,14 +91,14 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     {
         var validator = LoadSchemas();
         var files = Directory.GetFiles(_outputs.Dir.Path, "*.json", SearchOption.AllDirectories);
-        Assert.Equal(["acdream", "audit", "bsp", "index", "scene", "shadow"], files.Select(f => FormatOf(f).Name).Distinct().Order());
+        Assert.Equal(["acdream", "acdream-cell", "audit", "bsp", "cell", "doctor", "index", "scene", "shadow"], files.Select(f => FormatOf(f).Name).Distinct().Order());
         foreach (var file in files)
         {
             var format = FormatOf(file);
             using var doc = JsonDocument.Parse(File.ReadAllText(file));
             var errors = validator.Validate(doc.RootElement, format.SchemaId!);
             Assert.True(errors.Count == 0, $"{file}:\n{string.Join('\n', errors.Take(10))}");
-            if (format.Name != "acdream") Assert.Equal(format.Format, doc.RootElement.GetProperty("format").GetString());
+            if (format.Name is not ("acdream" or "acdream-cell")) Assert.Equal(format.Format, doc.RootElement.GetProperty("format").GetString());
         }
     }
 

@@ -1,5 +1,6 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Shapes;

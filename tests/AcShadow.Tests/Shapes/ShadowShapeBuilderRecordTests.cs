@@ -1,6 +1,8 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
 using static AcShadow.Tests.Support.Records;
 

@@ -1,4 +1,5 @@
 using AcShadow.Cli;
+using AcShadow.Cli.Infrastructure;
 
 namespace AcShadow.Tests.Support;
 

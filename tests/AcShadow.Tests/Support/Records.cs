@@ -1,5 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Support;
 

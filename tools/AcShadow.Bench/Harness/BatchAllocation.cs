@@ -3,6 +3,7 @@ using System.Globalization;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Bench.Harness;
 

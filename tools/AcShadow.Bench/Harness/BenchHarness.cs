@@ -1,3 +1,5 @@
+using AcShadow.Core.Batch;
+using AcShadow.Core.Dat;
 using System.Globalization;
 
 namespace AcShadow.Bench.Harness;
@@ -5,7 +7,8 @@ namespace AcShadow.Bench.Harness;
 /// <summary>
 /// One harness run: forge (or reuse) the scale dat and its quarter-size twin, then measure side by side,
 /// each warmed once and repeated: the floor, the naive exporter, `batch --all` at one job and at all
-/// cores, `--incremental` with nothing to do, `dump` against `--version`, and the collision reference
+/// cores, `--incremental` with nothing to do, `dump` against `--version`, the busiest landblock's scene with
+/// and without its indoor cells, and the collision reference
 /// against brute force; check the outputs are byte-identical; write bench.json and print the table.
 /// </summary>
 public static class BenchHarness
@@ -73,6 +76,18 @@ public static class BenchHarness
             timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
                 _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut]); }));
             Reset(dumpOut);
+
+            // A landblock's scene with and without its interiors: the landblock with the most cells.
+            var landblock = BusiestLandblock(full.Directory);
+            var sceneOut = Path.Combine(options.WorkDirectory, "scene");
+            foreach (var (name, extra) in new[] { ("batch --landblock, with cells", Array.Empty<string>()), ("batch --landblock --no-cells", ["--no-cells"]) })
+                timings.Add(Measure(log, options, name, "full", cores, "disk", $"acshadow batch --landblock {landblock.Id} ({landblock.Cells} cells) {string.Join(' ', extra)} --quiet into a new folder",
+                    _ =>
+                    {
+                        Reset(sceneOut);
+                        return ProcessRunner.Run(options.Cli, ["batch", "--landblock", landblock.Id, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", sceneOut, "--quiet", .. extra]);
+                    }));
+            Reset(sceneOut);
         }
         finally
         {
@@ -91,6 +106,15 @@ public static class BenchHarness
         report.PrintTable(log);
         log.WriteLine($"wrote {options.Output}");
         return report;
+    }
+
+    /// <summary>The scale dat's landblock with the most indoor cells (the first such id on a tie).</summary>
+    private static (string Id, uint Cells) BusiestLandblock(string datDirectory)
+    {
+        using var cell = DatDatabase.Open(File.OpenRead(Path.Combine(datDirectory, "client_cell_1.dat")), "client_cell_1.dat");
+        var (id, cells) = cell.ListIds(DatObjectKind.LandBlockInfo).Select(id => (Id: id, Cells: cell.ReadLandBlockInfo(id)!.NumCells))
+            .OrderByDescending(x => x.Cells).ThenBy(x => x.Id).First();
+        return (LandblockIds.Short(id), cells);
     }
 
     /// <summary>The work folder on disk, and the memory-backed one when there is one.</summary>

@@ -1,9 +1,9 @@
 using System.Diagnostics;
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Collision;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Bench.Harness;
 

@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Geometry;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Forge.Bsp;
 
@@ -26,11 +27,14 @@ namespace AcShadow.Forge.Bsp;
 /// inside or wholly outside the mesh. Solid rule: a leaf is solid (Solid = 1) exactly when it holds
 /// polygons and its cell is inside the mesh, decided by the winding number (sum of solid angles) of the
 /// whole mesh at a point inside the cell, built from the leaf's polygons that lie on the cell's boundary
-/// (each offset a little into the cell; the deepest such point is used). An empty child is normally
-/// absent (empty space); when the side in front of a splitter holds no polygons but is still inside the
+/// (each offset a little into the cell; the deepest such point is used). An empty side is normally
+/// empty space; when the side in front of a splitter holds no polygons but is still inside the
 /// mesh (one closed piece pushed into another, e.g. a leg into a slab), its leaf lists the polygons lying
 /// in the splitting plane, so that the inside it stands for can block (they also stay on the negative
 /// side). A leaf whose cell is still crossed (depth cap, a non-planar polygon) is not solid.</item>
+/// <item>Every internal node has both children, as in real physics BSPs (retail's solid query,
+/// BSPNODE::sphere_intersects_solid, follows both unchecked): an empty side is a LEAF with no polygons, not
+/// solid, with its own leaf index.</item>
 /// <item>Every mesh stops at <see cref="MaxDepth"/> (the reader refuses trees deeper than 256).</item>
 /// <item>Every node's sphere contains every vertex of every polygon below it. The root's sphere is the
 /// part's broad-phase sphere.</item>
@@ -104,12 +108,16 @@ public static class PhysicsBspBuilder
             if (pos.Count > 0) posChild = Node([.. pos], depth + 1);
             else if (closed && inPlane.Count > 0 && IsInside(PointInFrontOf(inPlane)))
                 posChild = Leaf([.. inPlane], Bounds([.. inPlane]), solid: true);
+            posChild ??= EmptyLeaf(sphere);
             _path[^1] = new HalfSpace(plane, false);
-            var negChild = neg.Count > 0 ? Node([.. neg], depth + 1) : null;
+            var negChild = neg.Count > 0 ? Node([.. neg], depth + 1) : EmptyLeaf(sphere);
             _path.RemoveAt(_path.Count - 1);
-            return new PhysicsBspNode(BspNodeTypes.ForChildren(posChild is not null, negChild is not null),
-                plane, posChild, negChild, sphere, 0, 0, []);
+            return new PhysicsBspNode(BspNodeTypes.ForChildren(pos: true, neg: true), plane, posChild, negChild, sphere, 0, 0, []);
         }
+
+        /// <summary>An empty side: a leaf of its own index, no polygons, not solid, its sphere a point at the parent's centre.</summary>
+        private PhysicsBspNode EmptyLeaf(Sphere parent) =>
+            new(BspNodeType.Leaf, default, null, null, new Sphere(parent.Center, 0f), _nextLeaf++, 0, []);
 
         private PhysicsBspNode Leaf(int[] set, Sphere sphere, bool solid) =>
             new(BspNodeType.Leaf, default, null, null, sphere, _nextLeaf++, solid && set.Length > 0 ? 1 : 0, set.Select(i => (ushort)polys[i].Id).ToArray());

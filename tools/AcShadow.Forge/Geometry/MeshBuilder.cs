@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Numerics;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Forge.Spec;
 
 namespace AcShadow.Forge.Geometry;
@@ -95,6 +96,18 @@ public sealed class MeshBuilder
         Polygons = _polygons.ToArray(),
         Physics = physics,
         Drawing = drawing,
+    };
+
+    /// <summary>
+    /// A cell shape: the first <paramref name="wallCount"/> polygons are its walls, floors and ceilings,
+    /// the rest its portal polygons (openings to other cells or outside).
+    /// </summary>
+    public CellStructSpec ToCellStructSpec(int wallCount, string? comment = null) => new()
+    {
+        Comment = comment,
+        Vertices = _vertices.Select(v => new[] { Tidy(v.X), Tidy(v.Y), Tidy(v.Z) }).ToArray(),
+        Polygons = _polygons.Take(wallCount).ToArray(),
+        Portals = _polygons.Skip(wallCount).ToArray(),
     };
 
     /// <summary>The shortest decimal that reads back as the same float (0.965f → 0.965, not 0.96499997...).</summary>

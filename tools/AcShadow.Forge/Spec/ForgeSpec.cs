@@ -1,4 +1,6 @@
+using System.Text.Json;
 using System.Text.Json.Serialization;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Forge.Spec;
 
@@ -21,6 +23,8 @@ public sealed record ForgeSpec
     public IReadOnlyList<MotionTableSpec> MotionTables { get; set; } = [];
     public IReadOnlyList<AnimationSpec> Animations { get; set; } = [];
     public IReadOnlyList<LandblockSpec> Landblocks { get; set; } = [];
+    /// <summary>Environments (portal dat, 0x0D…): the cell shapes a landblock's cells use.</summary>
+    public IReadOnlyList<EnvironmentSpec> Environments { get; set; } = [];
 }
 
 public sealed record GfxObjSpec
@@ -70,6 +74,8 @@ public sealed record SetupSpec
     public string? DefaultAnimation { get; set; }
     /// <summary>A motion table of this spec the object starts with.</summary>
     public string? DefaultMotionTable { get; set; }
+    /// <summary>Placement name (one of <see cref="Placements"/>) → the animation hooks its frame carries.</summary>
+    public IReadOnlyDictionary<string, IReadOnlyList<HookSpec>?> Hooks { get; set; } = new Dictionary<string, IReadOnlyList<HookSpec>?>();
 }
 
 /// <summary>A MotionTable: its default style, each style's default substate, and what each (style, motion) plays.</summary>
@@ -134,6 +140,17 @@ public sealed record AnimationSpec
     public IReadOnlyList<FrameSpec>? PosFrames { get; set; }
 }
 
+/// <summary>One animation hook: its type, direction and payload fields by name (docs/formats.md lists each type's fields).</summary>
+public sealed record HookSpec
+{
+    /// <summary>An <see cref="Core.Dat.Objects.AnimationHookType"/> name.</summary>
+    public string? Type { get; set; }
+    /// <summary>"Forward" (1, the default), "Backward" (-1) or "Both" (0).</summary>
+    public string? Direction { get; set; }
+    /// <summary>Field name → value: a number, true/false, a hex id string, [x, y, z], or a frame {origin, orientation}.</summary>
+    public IReadOnlyDictionary<string, JsonElement> Fields { get; set; } = new Dictionary<string, JsonElement>();
+}
+
 public sealed record FrameSpec
 {
     public double[]? Origin { get; set; }
@@ -163,6 +180,55 @@ public sealed record LandblockSpec
     public int NumCells { get; set; }
     public IReadOnlyList<StabSpec> Objects { get; set; } = [];
     public IReadOnlyList<BuildingSpec> Buildings { get; set; } = [];
+    /// <summary>Indoor cells (EnvCells), numbered 0xXXYY0100 upwards in this order.</summary>
+    public IReadOnlyList<CellSpec> Cells { get; set; } = [];
+}
+
+/// <summary>An Environment: its cell structures, indexed from 0 in this order.</summary>
+public sealed record EnvironmentSpec
+{
+    public string? Id { get; set; }
+    public string? Comment { get; set; }
+    public IReadOnlyList<CellStructSpec> CellStructs { get; set; } = [];
+}
+
+/// <summary>
+/// One cell shape in cell-local metres: <see cref="Polygons"/> are its walls, floors and ceilings
+/// (physics and drawing polygons, ids 0..n−1), <see cref="Portals"/> its openings (drawing polygons only,
+/// ids n, n+1, …, and the portal list).
+/// </summary>
+public sealed record CellStructSpec
+{
+    public string? Comment { get; set; }
+    public IReadOnlyList<double[]?> Vertices { get; set; } = [];
+    public IReadOnlyList<PolygonSpec> Polygons { get; set; } = [];
+    public IReadOnlyList<PolygonSpec> Portals { get; set; } = [];
+}
+
+/// <summary>An EnvCell: which shape, where (landblock-relative), its portals, the cells it sees and the objects inside it.</summary>
+public sealed record CellSpec
+{
+    public string? Comment { get; set; }
+    public string? Environment { get; set; }
+    public int CellStruct { get; set; }
+    public double[]? Origin { get; set; }
+    public QuaternionSpec? Orientation { get; set; }
+    public bool SeenOutside { get; set; }
+    public IReadOnlyList<CellPortalSpec> Portals { get; set; } = [];
+    /// <summary>Other cells of the landblock, as "0x0101".</summary>
+    public IReadOnlyList<string> VisibleCells { get; set; } = [];
+    public IReadOnlyList<StabSpec> Objects { get; set; } = [];
+}
+
+public sealed record CellPortalSpec
+{
+    /// <summary>Index into the cell structure's portals.</summary>
+    public int Polygon { get; set; }
+    /// <summary>"0x0101" (a cell of this landblock) or "outside".</summary>
+    public string? OtherCell { get; set; }
+    public int OtherPortal { get; set; }
+    /// <summary><see cref="Core.Dat.Objects.PortalFlags"/> names, comma-separated; default "None".</summary>
+    public string? Flags { get; set; }
 }
 
 public sealed record StabSpec

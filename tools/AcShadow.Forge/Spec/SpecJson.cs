@@ -1,8 +1,9 @@
 using System.Collections;
-using System.Text;
-using System.Text.Json;
-using System.Text.Json.Serialization;
 using System.Text.Json.Serialization.Metadata;
+using System.Text.Json.Serialization;
+using System.Text.Json;
+using System.Text;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Forge.Spec;
 

@@ -1,8 +1,11 @@
-using AcShadow.Core.Json;
 using System.Globalization;
 using System.Numerics;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Forge.Spec;
 
@@ -79,6 +82,19 @@ public static class SpecValidator
             });
         }
 
+        var environments = new List<ForgeEnvironment>();
+        var environmentList = spec.Environments ?? [];
+        for (var i = 0; i < environmentList.Count; i++)
+        {
+            var e = environmentList[i] ?? throw new SpecException($"environments[{i}]: is null; expected an object with id and cellStructs");
+            var id = ParseId(e.Id, $"environments[{i}]", DatObjectKind.Environment);
+            var where = $"environments[{i}] (0x{id:X8})";
+            var first = environments.FindIndex(x => x.Id == id);
+            if (first >= 0) throw new SpecException($"{where}: duplicate id, already declared by environments[{first}]; give each environment its own id");
+            environments.Add(ValidateEnvironment(e, id, where));
+        }
+
+        var cells = new List<EnvCell>();
         var landblocks = new List<LandBlockInfo>();
         var landblockIds = new Dictionary<uint, int>();
         var landblockList = spec.Landblocks ?? [];
@@ -89,10 +105,15 @@ public static class SpecValidator
             var where = $"landblocks[{i}] (0x{id:X8})";
             if (landblockIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by landblocks[{first}]; give each landblock its own id");
             landblockIds[id] = i;
-            landblocks.Add(ValidateLandblock(l, id, where, gfxIds, setupIds));
+            var landblockCells = ValidateCells(l.Cells ?? [], id, where, environments, gfxIds, setupIds);
+            if (landblockCells.Count > 0 && l.NumCells != 0 && l.NumCells != landblockCells.Count)
+                throw new SpecException($"{where}: numCells {l.NumCells} but {landblockCells.Count} cell(s) are given; leave numCells out (it is the number of cells)");
+            var info = ValidateLandblock(l, id, where, gfxIds, setupIds);
+            landblocks.Add(landblockCells.Count > 0 ? info with { NumCells = (uint)landblockCells.Count } : info);
+            cells.AddRange(landblockCells);
         }
 
-        return new ValidSpec(spec.Iteration, gfxObjs, setups, landblocks) { MotionTables = tables, Animations = animations };
+        return new ValidSpec(spec.Iteration, gfxObjs, setups, landblocks) { MotionTables = tables, Animations = animations, Environments = environments, Cells = cells };
     }
 
     /// <summary>0 when absent; else an id of the kind that this spec declares.</summary>
@@ -256,6 +277,15 @@ public static class SpecValidator
                 throw new SpecException($"{where}: placement \"{name}\" has {frames.Count} frame(s) but the setup has {parts.Length} part(s); the dat stores exactly one frame per part, so give {parts.Length}");
             placements.Add(new PlacementFrame(key, frames.Select((f, i) => Frame(f, $"{where} placement \"{name}\" frame {i}")).ToArray()));
         }
+        foreach (var (name, hookSpecs) in s.Hooks ?? new Dictionary<string, IReadOnlyList<HookSpec>?>())
+        {
+            var index = Placement.TryParse(name, out var key) ? placements.FindIndex(p => p.Placement == key) : -1;
+            if (index < 0) throw new SpecException($"{where}: hooks names placement \"{name}\", which is not one of its placements; hooks belong to a placement's frame");
+            placements[index] = placements[index] with
+            {
+                Hooks = (hookSpecs ?? []).Select((h, i) => HookValidator.Validate(h, $"{where} hooks \"{name}\"[{i}]")).ToArray(),
+            };
+        }
 
         var cyls = (s.CylSpheres ?? []).Select((c, i) =>
         {
@@ -313,6 +343,92 @@ public static class SpecValidator
             return new BuildingInfo(model, new Frame(Vector(b.Origin ?? [0, 0, 0], $"{at} origin"), Orientation(b.Orientation, $"{at} orientation")), (uint)b.NumLeaves, []);
         }).ToArray();
         return new LandBlockInfo(id, (uint)l.NumCells, objects, buildings, []);
+    }
+
+    private static ForgeEnvironment ValidateEnvironment(EnvironmentSpec e, uint id, string where)
+    {
+        var structs = e.CellStructs ?? [];
+        if (structs.Count == 0) throw new SpecException($"{where}: has no cellStructs; an environment needs at least one cell structure");
+        return new ForgeEnvironment(id, structs.Select((c, i) =>
+        {
+            var at = $"{where} cellStructs[{i}]";
+            if (c is null) throw new SpecException($"{at}: is null; expected {{vertices, polygons, portals}}");
+            var vertexSpecs = c.Vertices ?? [];
+            if (vertexSpecs.Count > MaxVertices) throw new SpecException($"{at}: {vertexSpecs.Count} vertices; vertex ids are int16, so at most {MaxVertices}");
+            var vertices = vertexSpecs.Select((v, k) => Vector(v, $"{at} vertices[{k}]")).ToArray();
+            var polygons = CellPolygons(c.Polygons ?? [], vertices.Length, $"{at} polygons");
+            if (polygons.Length == 0) throw new SpecException($"{at}: has no polygons; a cell's PhysicsBSP needs at least one");
+            var portals = CellPolygons(c.Portals ?? [], vertices.Length, $"{at} portals");
+            if (polygons.Length + portals.Length > ushort.MaxValue + 1) throw new SpecException($"{at}: more than {ushort.MaxValue + 1} polygons and portals; polygon ids are uint16");
+            return new ForgeCellStruct(vertices, polygons, portals);
+        }).ToArray());
+    }
+
+    private static Polygon[] CellPolygons(IReadOnlyList<PolygonSpec> specs, int vertexCount, string where) => specs.Select((ps, p) =>
+    {
+        var at = $"{where}[{p}]";
+        if (ps is null) throw new SpecException($"{at}: is null; expected {{\"vertices\": [0, 1, 2]}}");
+        var ids = ps.Vertices ?? [];
+        if (ids.Count < 3) throw new SpecException($"{at}: has {ids.Count} vertex id(s); a polygon needs at least 3");
+        if (ids.Count > byte.MaxValue) throw new SpecException($"{at}: has {ids.Count} vertex ids; a polygon holds at most 255");
+        foreach (var v in ids)
+            if (v < 0 || v >= vertexCount)
+                throw new SpecException($"{at}: vertex id {v} is out of range; valid ids are 0-{vertexCount - 1}");
+        var sides = ParseEnum(ps.SidesType, SidesType.Landblock, $"{at} sidesType");
+        var stippling = ParseEnum(ps.Stippling, Stippling.None, $"{at} stippling");
+        return new Polygon(stippling, sides, 0, 0, ids.Select(v => (short)v).ToArray(), [], []);
+    }).ToArray();
+
+    /// <summary>Cell i of a landblock is 0xXXYY0100 + i; portals and visible cells name cells of the same landblock.</summary>
+    private static List<EnvCell> ValidateCells(IReadOnlyList<CellSpec> specs, uint landblockId, string where, List<ForgeEnvironment> environments,
+        Dictionary<uint, int> gfxIds, Dictionary<uint, int> setupIds)
+    {
+        const int first = 0x0100;
+        if (specs.Count > 0xFFFD - first + 1) throw new SpecException($"{where}: {specs.Count} cells; cell ids run from 0x0100 to 0xFFFD");
+        var cells = new List<EnvCell>();
+        for (var i = 0; i < specs.Count; i++)
+        {
+            var id = (landblockId & 0xFFFF0000u) | (uint)(first + i);
+            var at = $"{where} cells[{i}] (0x{id:X8})";
+            var c = specs[i] ?? throw new SpecException($"{at}: is null; expected {{environment, cellStruct, origin, portals}}");
+            var envId = ParseId(c.Environment, $"{at} environment", DatObjectKind.Environment);
+            var environment = environments.Find(e => e.Id == envId)
+                ?? throw new SpecException($"{at}: environment 0x{envId:X8} is not in this spec's environments; declare it");
+            if (c.CellStruct < 0 || c.CellStruct >= environment.CellStructs.Count)
+                throw new SpecException($"{at}: cellStruct {c.CellStruct} is out of range; environment 0x{envId:X8} has {environment.CellStructs.Count} (0-{environment.CellStructs.Count - 1})");
+            var shape = environment.CellStructs[c.CellStruct];
+            ushort OtherCell(string? text, string what)
+            {
+                if (string.Equals(text, "outside", StringComparison.OrdinalIgnoreCase)) return CellPortal.Outside;
+                var other = ParseHex(text, what);
+                if (other < first || other >= first + specs.Count || other == first + i)
+                    throw new SpecException($"{what}: 0x{other:X4} is not another cell of this landblock (0x{first:X4}-0x{first + specs.Count - 1:X4}, not itself){(what.EndsWith("otherCell", StringComparison.Ordinal) ? " or \"outside\"" : "")}");
+                return (ushort)other;
+            }
+            var portals = (c.Portals ?? []).Select((p, k) =>
+            {
+                var pat = $"{at} portals[{k}]";
+                if (p is null) throw new SpecException($"{pat}: is null; expected {{polygon, otherCell, otherPortal, flags}}");
+                if (p.Polygon < 0 || p.Polygon >= shape.Portals.Count)
+                    throw new SpecException($"{pat}: polygon {p.Polygon} is out of range; the cell structure has {shape.Portals.Count} portal polygon(s)");
+                if (p.OtherPortal is < 0 or > ushort.MaxValue) throw new SpecException($"{pat}: otherPortal {p.OtherPortal} is not a uint16");
+                var flags = ParseEnum(p.Flags, PortalFlags.None, $"{pat} flags");
+                return new CellPortal(flags, (ushort)(shape.Polygons.Count + p.Polygon), OtherCell(p.OtherCell, $"{pat} otherCell"), (ushort)p.OtherPortal);
+            }).ToArray();
+            if (portals.Length > byte.MaxValue) throw new SpecException($"{at}: {portals.Length} portals; the dat stores at most 255");
+            var visible = (c.VisibleCells ?? []).Select((v, k) => OtherCell(v, $"{at} visibleCells[{k}]")).ToArray();
+            var objects = (c.Objects ?? []).Select((o, k) =>
+            {
+                var oat = $"{at} objects[{k}]";
+                if (o is null) throw new SpecException($"{oat}: is null; expected {{id, origin, orientation}}");
+                return new Stab(ModelId(o.Id, oat, gfxIds, setupIds), new Frame(Vector(o.Origin ?? [0, 0, 0], $"{oat} origin"), Orientation(o.Orientation, $"{oat} orientation")));
+            }).ToArray();
+            var flagsOf = (c.SeenOutside ? EnvCellFlags.SeenOutside : 0) | (objects.Length > 0 ? EnvCellFlags.HasStaticObjs : 0);
+            cells.Add(new EnvCell(id, flagsOf, [], (ushort)(envId & 0xFFFF), (ushort)c.CellStruct,
+                new Frame(Vector(c.Origin ?? [0, 0, 0], $"{at} origin"), Orientation(c.Orientation, $"{at} orientation")),
+                portals, visible, objects, 0));
+        }
+        return cells;
     }
 
     private static uint ModelId(string? text, string at, Dictionary<uint, int> gfxIds, Dictionary<uint, int> setupIds)

@@ -17,7 +17,7 @@ internal static class ChartFormat
 
     public static string I(long value) => value.ToString(CultureInfo.InvariantCulture);
 
-    public static string Id(uint id) => Json.JsonIds.Format(id);
+    public static string Id(uint id) => Fixtures.Json.JsonIds.Format(id);
 
     public static string Csv(string field) => Reports.CsvField.Of(field);
 

@@ -19,9 +19,11 @@ internal sealed class SvgDocument
         _height = height;
     }
 
-    public void Rect(double x, double y, double w, double h, string fill, string? stroke = null, double strokeWidth = 1, string? title = null)
+    public void Rect(double x, double y, double w, double h, string fill, string? stroke = null, double strokeWidth = 1, string? title = null, double fillOpacity = 1, string? dash = null)
     {
         _body.Append($"<rect x=\"{N(x)}\" y=\"{N(y)}\" width=\"{N(w)}\" height=\"{N(h)}\" fill=\"{fill}\"");
+        if (fill != "none" && fillOpacity < 1) _body.Append($" fill-opacity=\"{N(fillOpacity)}\"");
+        if (dash is not null) _body.Append($" stroke-dasharray=\"{dash}\"");
         if (stroke is not null) _body.Append($" stroke=\"{stroke}\" stroke-width=\"{N(strokeWidth)}\"");
         Close("rect", title);
     }
@@ -33,11 +35,23 @@ internal sealed class SvgDocument
         _body.Append("/>\n");
     }
 
-    public void Circle(double cx, double cy, double r, string fill, string? stroke = null, double strokeWidth = 1, string? title = null)
+    public void Circle(double cx, double cy, double r, string fill, string? stroke = null, double strokeWidth = 1, string? title = null, double fillOpacity = 1, string? dash = null)
     {
         _body.Append($"<circle cx=\"{N(cx)}\" cy=\"{N(cy)}\" r=\"{N(r)}\" fill=\"{fill}\"");
+        if (fill != "none" && fillOpacity < 1) _body.Append($" fill-opacity=\"{N(fillOpacity)}\"");
+        if (dash is not null) _body.Append($" stroke-dasharray=\"{dash}\"");
         if (stroke is not null) _body.Append($" stroke=\"{stroke}\" stroke-width=\"{N(strokeWidth)}\"");
         Close("circle", title);
+    }
+
+    /// <summary>A closed outline through the points; <paramref name="fillOpacity"/> below 1 lets what lies behind show.</summary>
+    public void Polygon(IEnumerable<(double X, double Y)> points, string fill, double fillOpacity, string stroke, double strokeWidth = 1, string? dash = null)
+    {
+        _body.Append("<polygon points=\"").AppendJoin(' ', points.Select(p => N(p.X) + "," + N(p.Y))).Append($"\" fill=\"{fill}\"");
+        if (fill != "none" && fillOpacity < 1) _body.Append($" fill-opacity=\"{N(fillOpacity)}\"");
+        _body.Append($" stroke=\"{stroke}\" stroke-width=\"{N(strokeWidth)}\" stroke-linejoin=\"round\"");
+        if (dash is not null) _body.Append($" stroke-dasharray=\"{dash}\"");
+        _body.Append("/>\n");
     }
 
     /// <summary>Text; anchor start | middle | end; rotate in degrees about the anchor point.</summary>

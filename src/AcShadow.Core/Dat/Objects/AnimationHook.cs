@@ -1,3 +1,6 @@
+using System.Globalization;
+using System.Numerics;
+
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
@@ -25,17 +28,16 @@ public sealed record AnimationHook
     /// <summary>When the hook fires: 1 forward, -1 backward, 0 both ways (stored as an int).</summary>
     public int Direction { get; }
 
-    /// <summary>The bytes after type and direction, without the alignment padding.</summary>
+    /// <summary>The bytes after type and direction (<see cref="AnimationHookLayout.Fields"/> names them).</summary>
     public ReadOnlyMemory<byte> Payload => _payload;
 
-    /// <summary>Reads one hook, padding included; an unknown type is a <see cref="DatFormatException"/> naming <paramref name="where"/>.</summary>
+    /// <summary>Reads one hook (no padding follows it); an unknown type is a <see cref="DatFormatException"/> naming <paramref name="where"/>.</summary>
     public static AnimationHook Read(DatBinaryReader r, string where)
     {
         var type = (AnimationHookType)r.ReadUInt32();
         var direction = r.ReadInt32();
         var payload = AnimationHookLayout.ReadPayload(r, type)
             ?? throw new DatFormatException($"{where}: animation hook type {(uint)type} (0x{(uint)type:X8}) is unknown, so its length and everything after it cannot be read");
-        r.Align(AnimationHookLayout.Alignment);
         return new AnimationHook(type, direction, payload);
     }
 
@@ -44,8 +46,38 @@ public sealed record AnimationHook
         w.WriteUInt32((uint)Type);
         w.WriteInt32(Direction);
         w.WriteBytes(_payload);
-        w.Align(AnimationHookLayout.Alignment);
     }
+
+    /// <summary>
+    /// The payload's fields as "name=value", space-separated, in stored order (ids in hex, floats round-trip,
+    /// invariant culture): what a report shows of a hook, and what tests compare with hand-worked values.
+    /// </summary>
+    public string FieldText()
+    {
+        var r = new DatBinaryReader(_payload);
+        var parts = new List<string>();
+        foreach (var field in AnimationHookLayout.Fields(Type))
+            parts.Add($"{field.Name}={FieldValue(r, field.Kind)}");
+        return string.Join(' ', parts);
+    }
+
+    private static string FieldValue(DatBinaryReader r, AnimationHookFieldKind kind) => kind switch
+    {
+        AnimationHookFieldKind.UInt32 => r.ReadUInt32().ToString(CultureInfo.InvariantCulture),
+        AnimationHookFieldKind.DataId => $"0x{r.ReadUInt32():X8}",
+        AnimationHookFieldKind.Bool32 => r.ReadUInt32() != 0 ? "true" : "false",
+        AnimationHookFieldKind.Float => Number(r.ReadSingle()),
+        AnimationHookFieldKind.UInt16 => r.ReadUInt16().ToString(CultureInfo.InvariantCulture),
+        AnimationHookFieldKind.PackedGfxObjId => $"0x{r.ReadPackedDataId(AnimationHookField.GfxObjBase):X8}",
+        AnimationHookFieldKind.Vector3 => Vector(r.ReadVector3()),
+        AnimationHookFieldKind.Frame => FrameText(Frame.Read(r)),
+        _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),
+    };
+
+    private static string Number(float f) => f.ToString("R", CultureInfo.InvariantCulture);
+    private static string Vector(Vector3 v) => $"[{Number(v.X)}, {Number(v.Y)}, {Number(v.Z)}]";
+    private static string FrameText(Frame f) =>
+        $"{Vector(f.Origin)}@[{Number(f.Orientation.W)}, {Number(f.Orientation.X)}, {Number(f.Orientation.Y)}, {Number(f.Orientation.Z)}]";
 
     public bool Equals(AnimationHook? other) =>
         other is not null && Type == other.Type && Direction == other.Direction && _payload.AsSpan().SequenceEqual(other._payload);

@@ -1,81 +1,100 @@
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
-/// How many bytes each animation hook type's payload takes. A hook is stored as
-/// <c>uint type, int direction, payload</c>, then zero bytes up to the next multiple of 4 (counted from the
-/// object's start). acshadow never interprets a payload; it only has to step over it exactly.
-/// Every payload has a fixed length except ReplaceObject's, whose part id is packed in 2 or 4 bytes.
+/// Each animation hook type's payload, field by field. A hook is stored as <c>uint type, int direction</c>,
+/// then its payload, and the next hook follows straight after: no padding, even after a ReplaceObject whose
+/// long-form id leaves the next hook two bytes off a 4-byte boundary. The two public readers agree on every
+/// layout here (DatReaderWriter's dats.xml, ACE's DatLoader hook classes) except CreateBlockingParticle,
+/// which DatReaderWriter gives no payload and ACE reads as a CreateParticle (its class derives from that
+/// hook's): ACE is followed, because it is the reader that runs against real retail dats, and because a
+/// frame carrying one would lose its fields after the hook under the other reading if the payload is there.
+/// NoOp has no layout in either reader (both stop at it); acshadow reads it as the bare header, a no-op
+/// carrying nothing. docs/dat-layer.md lists the same table.
 /// </summary>
 public static class AnimationHookLayout
 {
     /// <summary>The hook type and direction that precede every payload.</summary>
     public const int HeaderBytes = 8;
 
-    /// <summary>Hooks are padded to this alignment after their payload.</summary>
-    public const int Alignment = 4;
+    private static AnimationHookField U(string name) => new(name, AnimationHookFieldKind.UInt32);
+    private static AnimationHookField F(string name) => new(name, AnimationHookFieldKind.Float);
+    private static AnimationHookField Id(string name) => new(name, AnimationHookFieldKind.DataId);
+    private static AnimationHookField B(string name) => new(name, AnimationHookFieldKind.Bool32);
 
-    /// <summary>ReplaceObject: byte part index, then a GfxObj id as a "data id of known type" (0x01000000 base).</summary>
-    private const int ReplaceObjectShortBytes = 1 + 2;
-    private const int ReplaceObjectLongBytes = 1 + 4;
-    private const int Variable = -1;
+    private static readonly AnimationHookField[] None = [];
+    private static readonly AnimationHookField[] Fade = [F("start"), F("end"), F("time")];
+    private static readonly AnimationHookField[] PartFade = [U("partIndex"), F("start"), F("end"), F("time")];
+    private static readonly AnimationHookField[] Particle =
+        [Id("emitterInfoId"), U("partIndex"), new("offset", AnimationHookFieldKind.Frame), U("emitterId")];
 
-    // Indexed by AnimationHookType. Frame = Vector3 origin + quaternion = 28 bytes.
-    private static readonly int[] PayloadBytes =
+    // Indexed by AnimationHookType.
+    private static readonly AnimationHookField[][] Layouts =
     [
-        0,        // NoOp
-        4,        // Sound: uint sound id
-        4,        // SoundTable: uint sound type
-        28,       // Attack: AttackCone = uint part index, float left x/y, float right x/y, float radius, float height
-        0,        // AnimationDone
-        Variable, // ReplaceObject: byte part index + packed GfxObj id (2 or 4 bytes)
-        4,        // Ethereal: uint flag
-        16,       // TransparentPart: uint part index, float start, end, time
-        12,       // Luminous: float start, end, time
-        16,       // LuminousPart: uint part index, float start, end, time
-        12,       // Diffuse: float start, end, time
-        16,       // DiffusePart: uint part index, float start, end, time
-        8,        // Scale: float end, time
-        40,       // CreateParticle: uint emitter info id, uint part index, Frame offset, uint emitter id
-        4,        // DestroyParticle: uint emitter id
-        4,        // StopParticle: uint emitter id
-        4,        // NoDraw: uint flag
-        0,        // DefaultScript
-        4,        // DefaultScriptPart: uint part index
-        8,        // CallPES: uint script id, float pause
-        12,       // Transparent: float start, end, time
-        16,       // SoundTweaked: uint sound id, three floats (probability, priority, volume)
-        12,       // SetOmega: Vector3 axis
-        8,        // TextureVelocity: float u speed, v speed
-        12,       // TextureVelocityPart: uint part index, float u speed, v speed
-        4,        // SetLight: uint flag
-        40,       // CreateBlockingParticle: the retail class derives from CreateParticle and unpacks the same way
+        None,                                                                   // NoOp
+        [Id("soundId")],                                                        // Sound
+        [U("soundType")],                                                       // SoundTable
+        [U("partIndex"), F("leftX"), F("leftY"), F("rightX"), F("rightY"), F("radius"), F("height")], // Attack (AttackCone)
+        None,                                                                   // AnimationDone
+        [new("partIndex", AnimationHookFieldKind.UInt16), new("gfxObjId", AnimationHookFieldKind.PackedGfxObjId)], // ReplaceObject
+        [B("ethereal")],                                                        // Ethereal
+        PartFade,                                                               // TransparentPart
+        Fade,                                                                   // Luminous
+        PartFade,                                                               // LuminousPart
+        Fade,                                                                   // Diffuse
+        PartFade,                                                               // DiffusePart
+        [F("end"), F("time")],                                                  // Scale
+        Particle,                                                               // CreateParticle
+        [U("emitterId")],                                                       // DestroyParticle
+        [U("emitterId")],                                                       // StopParticle
+        [B("noDraw")],                                                          // NoDraw
+        None,                                                                   // DefaultScript
+        [U("partIndex")],                                                       // DefaultScriptPart
+        [Id("scriptId"), F("pause")],                                           // CallPES (a PhysicsScript id)
+        Fade,                                                                   // Transparent
+        [Id("soundId"), F("priority"), F("probability"), F("volume")],          // SoundTweaked
+        [new("axis", AnimationHookFieldKind.Vector3)],                          // SetOmega
+        [F("uSpeed"), F("vSpeed")],                                             // TextureVelocity
+        [U("partIndex"), F("uSpeed"), F("vSpeed")],                             // TextureVelocityPart
+        [B("lightsOn")],                                                        // SetLight
+        Particle,                                                               // CreateBlockingParticle: as CreateParticle (ACE)
     ];
 
-    public static bool IsKnown(AnimationHookType type) => (uint)type < (uint)PayloadBytes.Length;
+    public static bool IsKnown(AnimationHookType type) => (uint)type < (uint)Layouts.Length;
+
+    /// <summary>The payload's fields in stored order; an unknown type has none to give.</summary>
+    public static IReadOnlyList<AnimationHookField> Fields(AnimationHookType type) =>
+        IsKnown(type) ? Layouts[(int)type] : throw new ArgumentOutOfRangeException(nameof(type), type, "no known layout");
 
     /// <summary>
-    /// Reads the payload of a hook whose type and direction were just read (the padding is not read),
-    /// or returns null when the type is unknown: its length cannot be known.
+    /// Reads the payload of a hook whose type and direction were just read, or returns null when the type is
+    /// unknown: its length cannot be known.
     /// </summary>
     public static byte[]? ReadPayload(DatBinaryReader r, AnimationHookType type)
     {
         if (!IsKnown(type)) return null;
-        var length = PayloadBytes[(int)type];
-        if (length != Variable) return r.ReadBytes(length);
-        var head = r.ReadBytes(ReplaceObjectShortBytes);
-        return HasLongDataId(head) ? [.. head, .. r.ReadBytes(ReplaceObjectLongBytes - ReplaceObjectShortBytes)] : head;
+        var length = 0;
+        foreach (var field in Layouts[(int)type])
+        {
+            length += field.MinBytes;
+            if (field.Kind == AnimationHookFieldKind.PackedGfxObjId && IsLongForm(r.Peek(length)[^1])) length += 2;
+        }
+        return r.ReadBytes(length);
     }
 
     /// <summary>Whether <paramref name="payload"/> is exactly one payload of a known <paramref name="type"/>.</summary>
     public static bool Fits(AnimationHookType type, ReadOnlySpan<byte> payload)
     {
         if (!IsKnown(type)) return false;
-        var length = PayloadBytes[(int)type];
-        if (length != Variable) return payload.Length == length;
-        return payload.Length >= ReplaceObjectShortBytes
-            && payload.Length == (HasLongDataId(payload) ? ReplaceObjectLongBytes : ReplaceObjectShortBytes);
+        var length = 0;
+        foreach (var field in Layouts[(int)type])
+        {
+            length += field.MinBytes;
+            if (length > payload.Length) return false;
+            if (field.Kind == AnimationHookFieldKind.PackedGfxObjId && IsLongForm(payload[length - 1])) length += 2;
+        }
+        return payload.Length == length;
     }
 
     /// <summary>The packed id's first (little-endian) ushort has its top bit set when a second ushort follows.</summary>
-    private static bool HasLongDataId(ReadOnlySpan<byte> replaceObjectPayload) => (replaceObjectPayload[2] & 0x80) != 0;
+    private static bool IsLongForm(byte firstUShortHighByte) => (firstUShortHighByte & 0x80) != 0;
 }

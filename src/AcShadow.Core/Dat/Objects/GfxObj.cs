@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Core.Dat.Objects;
 
@@ -28,19 +29,7 @@ public sealed record GfxObj(
         var surfaces = new uint[surfaceCount];
         for (var i = 0; i < surfaceCount; i++) surfaces[i] = r.ReadUInt32();
 
-        var vertexType = r.ReadInt32();
-        if (vertexType != 1) throw new DatFormatException($"vertex type {vertexType} is not the SW vertex type (1)");
-        var vertexCount = r.ReadCount(r.ReadUInt32(), 28, "vertex");
-        var vertices = new Dictionary<ushort, Vector3>(vertexCount);
-        for (var i = 0; i < vertexCount; i++)
-        {
-            var key = r.ReadUInt16();
-            var uvCount = r.ReadUInt16();
-            var origin = r.ReadVector3();
-            r.ReadVector3(); // normal: drawing only
-            r.Skip(uvCount * 8);
-            vertices[key] = origin;
-        }
+        var vertices = VertexArrayLayout.Read(r);
 
         List<KeyValuePair<ushort, Polygon>> physicsPolygons = [];
         PhysicsBspNode? bsp = null;

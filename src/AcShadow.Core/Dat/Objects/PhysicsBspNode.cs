@@ -1,4 +1,6 @@
 using System.Numerics;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat.Objects;
 

@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Bsp;
+
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>

@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Dat.Objects;
+namespace AcShadow.Fixtures.Bsp;
 
 /// <summary>
 /// BSP node tags: four ASCII characters read as a little-endian int, so "LEAF" is 0x4C454146.

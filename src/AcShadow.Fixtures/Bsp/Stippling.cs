@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Dat.Objects;
+namespace AcShadow.Fixtures.Bsp;
 
 /// <summary>Polygon stippling flags; NoPos/NoNeg say which UV index lists are absent.</summary>
 [Flags]

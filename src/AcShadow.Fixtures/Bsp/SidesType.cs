@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Dat.Objects;
+namespace AcShadow.Fixtures.Bsp;
 
 /// <summary>
 /// A polygon's cull mode as stored in the dat, with DatReaderWriter's names. What the values mean:

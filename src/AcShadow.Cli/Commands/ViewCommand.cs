@@ -1,0 +1,252 @@
+using System.CommandLine;
+using System.Globalization;
+using System.Numerics;
+using System.Text.Json;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Core.Batch;
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Json;
+using AcShadow.Core.Scenes;
+using AcShadow.Core.Shapes;
+using AcShadow.Core.View;
+using AcShadow.Fixtures;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
+
+namespace AcShadow.Cli.Commands;
+
+/// <summary>
+/// `acshadow view [--setup ID ...] [--landblock 0xXXYY] [--fixtures DIR] [--chart DIR] --out DIR`: each Setup
+/// (or the landblock) as a binary glTF model with one layer per shape model, and a three-view SVG drawing.
+/// </summary>
+public static class ViewCommand
+{
+    public const string DefaultOut = "acshadow-view";
+
+    public static Command Create(CliConsole console)
+    {
+        var setup = new Option<string[]>("--setup") { Description = "a Setup to view, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
+        var selection = new SelectionOptions();
+        var fixtures = new Option<string?>("--fixtures") { Description = "read a folder `dump` or `batch` wrote (shadow files, BSP dumps, scene.json) instead of a dat; with no --setup or --landblock, everything in it", HelpName = "DIR" };
+        var chart = new Option<string?>("--chart") { Description = "a folder `chart` wrote: its false passes and false blocks (failures.csv) become markers", HelpName = "DIR" };
+        var dat = CommonOptions.Dat();
+        var outDir = CommonOptions.Out(DefaultOut);
+        var scale = CommonOptions.Scale();
+        var pose = new PoseOptions();
+        var command = new Command("view", "Write each Setup (or a landblock) as a glTF model (.glb, one layer per shape model) and a three-view drawing (.svg)")
+        {
+            setup, selection.Landblock, selection.CellDat, fixtures, chart, dat, outDir, scale,
+        };
+        foreach (var option in pose.All) command.Options.Add(option);
+        command.SetAction(parse =>
+        {
+            var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).Distinct().ToArray();
+            uint? landblock = null;
+            if (parse.GetValue(selection.Landblock) is { } text)
+                landblock = LandblockIds.TryParse(text, out var lb) ? lb
+                    : throw new CliException(ExitCodes.Usage, $"--landblock: '{text}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
+            var folder = parse.GetValue(fixtures);
+            if (folder is null && ids.Length == 0 && landblock is null)
+                throw new CliException(ExitCodes.Usage, "choose what to view: --setup ID (repeatable), --landblock 0xXXYY, or --fixtures DIR");
+            if (folder is not null && (parse.GetValue(dat) is not null || parse.GetValue(selection.CellDat) is not null))
+                throw new CliException(ExitCodes.Usage, "--fixtures reads only the folder's JSON: drop --dat and --cell-dat");
+            if (folder is not null && parse.GetValue(scale) is not null)
+                throw new CliException(ExitCodes.Usage, "--fixtures views the files at the scale they were written with: drop --scale");
+            if (folder is not null && pose.All.Any(o => parse.GetResult(o) is not null))
+                throw new CliException(ExitCodes.Usage, "--fixtures views the files in the pose they were written with: drop --pose, --state and --motion-table");
+            var failures = parse.GetValue(chart) is { } chartDir ? ReadFailures(chartDir) : [];
+            var scenes = folder is not null
+                ? FromFixtures(console, folder, ids, landblock, failures)
+                : FromDat(console, parse.GetValue(dat), parse.GetValue(selection.CellDat), ids, landblock,
+                    pose.Apply(parse, new ShapeBuildOptions(ShapePolicy.Retail, ArgumentParsing.Scale(parse.GetValue(scale)))), failures);
+            return Write(console, parse.GetValue(outDir)!, scenes);
+        });
+        return command;
+    }
+
+    private static IReadOnlyList<ViewScene> FromDat(CliConsole console, string? datPath, string? cellPath, uint[] ids, uint? landblock, ShapeBuildOptions pose, IReadOnlyList<ChartFailure> failures)
+    {
+        using var dat = DatLocator.Open(datPath, cellPath, console);
+        var scenes = new List<ViewScene>();
+        foreach (var id in ids)
+        {
+            var setup = dat.Portal.ReadSetup(id)
+                ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(id)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
+            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, pose, dat.Portal);
+            DiagnosticPrinter.Print(console.Error, JsonIds.Format(id), subject.Diagnostics);
+            scenes.Add(ViewSceneBuilder.ForSetup(subject, failures));
+        }
+        if (landblock is { } lb)
+        {
+            if (dat.Cell is null)
+                throw new CliException(ExitCodes.Usage, $"--landblock {LandblockIds.Short(lb)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
+            var info = dat.Cell.ReadLandBlockInfo(lb)
+                ?? throw new CliException(ExitCodes.NotInDat, $"landblock {LandblockIds.Short(lb)} has no LandBlockInfo (0x{lb:X8}) in {dat.Cell.Info.FileName}");
+            var scene = LandblockScene.From(info);
+            var subjects = new Dictionary<uint, ViewSubject?>();
+            ViewSubject? Subject(SceneObject o)
+            {
+                if (subjects.TryGetValue(o.Id, out var known)) return known;
+                ViewSubject? made = null;
+                try
+                {
+                    made = o.Kind switch
+                    {
+                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, pose, dat.Portal) : null,
+                        SceneObjectKind.GfxObj => dat.Portal.ReadGfxObj(o.Id) is { } g ? ViewSubjects.FromBareGfxObj(g, dat.Portal.ReadGfxObj, pose.EntityScale) : null,
+                        _ => null,
+                    };
+                    if (made is null) console.Error.WriteLine($"warning: {JsonIds.Format(o.Id)}: placed by landblock {LandblockIds.Short(lb)} but not a Setup or GfxObj of {dat.Description}; not drawn");
+                    else DiagnosticPrinter.Print(console.Error, JsonIds.Format(o.Id), made.Diagnostics);
+                }
+                catch (DatFormatException e)
+                {
+                    console.Error.WriteLine($"warning: {JsonIds.Format(o.Id)}: unreadable, not drawn: {e.Message}");
+                }
+                return subjects[o.Id] = made;
+            }
+            var placements = scene.Objects
+                .Select(o => (o, s: Subject(o)))
+                .Where(p => p.s is not null)
+                .Select(p => new ViewPlacement(p.o.Index, p.s!, new ViewFrame(p.o.Frame.Origin, p.o.Frame.Orientation)))
+                .ToArray();
+            var c = scene.Coordinates;
+            scenes.Add(ViewSceneBuilder.ForLandblock(lb, new Vector3((float)c.WorldOriginX, (float)c.WorldOriginY, 0), placements, failures, [CompiledSceneNote]));
+        }
+        return scenes;
+    }
+
+    /// <summary>Until a compiled scene format exists, a landblock shows every model of every object.</summary>
+    private const string CompiledSceneNote = "Every object is shown under every model; a compiled scene's chosen model per object is not read yet.";
+
+    private static IReadOnlyList<ViewScene> FromFixtures(CliConsole console, string folder, uint[] ids, uint? landblock, IReadOnlyList<ChartFailure> failures)
+    {
+        if (!Directory.Exists(folder))
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} is not a folder: pass the folder `acshadow dump` or `batch` wrote");
+        var dumps = new Dictionary<uint, BspDump?>();
+        BspDump? Dump(uint id)
+        {
+            if (!dumps.TryGetValue(id, out var dump))
+            {
+                var path = Path.Combine(folder, BspFileFormat.PathFor(id));
+                dumps[id] = dump = File.Exists(path) ? ReadFixture(path, BspFileReader.Read) : null;
+                if (dump is null) console.Error.WriteLine($"warning: {JsonIds.Format(id)}: {path} is missing; its shapes are not drawn");
+            }
+            return dump;
+        }
+        var subjects = new Dictionary<uint, ViewSubject>();
+        ViewSubject Setup(uint id)
+        {
+            if (subjects.TryGetValue(id, out var known)) return known;
+            var path = Path.Combine(folder, ShadowFileFormat.PathFor(id));
+            if (!File.Exists(path))
+                throw new CliException(ExitCodes.NotInDat, $"--fixtures: no shadow file for Setup {JsonIds.Format(id)} ({path}): write it with `acshadow dump --setup {JsonIds.Format(id)} --out {folder}`");
+            return subjects[id] = ReadFixture(path, json => ViewSubjects.FromShadowFile(json, Dump));
+        }
+
+        var scenePath = Path.Combine(folder, SceneFileFormat.Path);
+        // Nothing chosen: everything the folder holds, every Setup and the scene when there is one.
+        var everything = ids.Length == 0 && landblock is null;
+        if (everything)
+        {
+            var setups = Path.Combine(folder, "setups");
+            ids = Directory.Exists(setups)
+                ? Directory.GetFiles(setups, "*" + ShadowSuffix).Select(f => Path.GetFileName(f)[..^ShadowSuffix.Length])
+                    .Select(n => JsonIds.TryParse(n, out var id) ? id : (uint?)null).OfType<uint>().Order().ToArray()
+                : [];
+            if (ids.Length == 0 && !File.Exists(scenePath))
+                throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} holds no setups/*{ShadowSuffix} and no {SceneFileFormat.Path}: pass the folder `acshadow dump` or `batch` wrote");
+        }
+        var scenes = ids.Select(id => ViewSceneBuilder.ForSetup(Setup(id), failures)).ToList();
+        if (landblock is not null || (everything && File.Exists(scenePath)))
+        {
+            if (!File.Exists(scenePath))
+                throw new CliException(ExitCodes.NotInDat, $"--fixtures: {folder} has no {SceneFileFormat.Path}: write it with `acshadow batch --landblock 0xXXYY --out {folder}`");
+            var text = ReadFixture(scenePath, t => t);
+            var scene = ReadFixture(scenePath, FixtureScene.Read);
+            if (landblock is { } lb && lb != scene.LandblockId)
+                throw new CliException(ExitCodes.NotInDat, $"--fixtures: {scenePath} describes landblock {LandblockIds.Short(scene.LandblockId)}, not {LandblockIds.Short(lb)}");
+            var frames = ReadFixture(scenePath, SceneFileFrames.Read);
+            var placements = new List<ViewPlacement>();
+            foreach (var o in scene.Objects.Where(o => o.File is not null))
+            {
+                var subject = o.Kind == "setup" ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, PolicyName(text), o.Shapes, Dump);
+                placements.Add(new ViewPlacement(o.Index, subject, frames[o.Index]));
+            }
+            scenes.Add(ViewSceneBuilder.ForLandblock(scene.LandblockId, scene.WorldOrigin, placements, failures,
+                ["Read from the fixtures' scene.json; " + CompiledSceneNote[0..1].ToLowerInvariant() + CompiledSceneNote[1..]]));
+        }
+        foreach (var s in subjects.Values) DiagnosticPrinter.Print(console.Error, JsonIds.Format(s.Id), s.Diagnostics);
+        return scenes;
+    }
+
+    private const string ShadowSuffix = ".shadow.json";
+
+    private static string PolicyName(string sceneJson)
+    {
+        using var doc = JsonDocument.Parse(sceneJson);
+        return doc.RootElement.GetProperty("policy").GetString() ?? "retail";
+    }
+
+    private static T ReadFixture<T>(string path, Func<string, T> read)
+    {
+        try
+        {
+            return read(File.ReadAllText(path));
+        }
+        catch (Exception e) when (e is FormatException or JsonException or InvalidOperationException or KeyNotFoundException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {path} is not an acshadow file this version reads: {e.Message}");
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: cannot read {path}: {e.Message}");
+        }
+    }
+
+    private static IReadOnlyList<ChartFailure> ReadFailures(string folder)
+    {
+        var path = Path.Combine(folder, "failures.csv");
+        if (!File.Exists(path))
+            throw new CliException(ExitCodes.Usage, $"--chart: {path} does not exist: pass the folder `acshadow chart --out` wrote");
+        try
+        {
+            return ChartFailure.ParseCsv(File.ReadAllText(path));
+        }
+        catch (FormatException e)
+        {
+            throw new CliException(ExitCodes.Usage, $"--chart: {path}: {e.Message}");
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--chart: cannot read {path}: {e.Message}");
+        }
+    }
+
+    private static int Write(CliConsole console, string outDir, IReadOnlyList<ViewScene> scenes)
+    {
+        var files = scenes.SelectMany(s => new[]
+        {
+            (Path: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
+            (Path: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
+        }).ToArray();
+        OutputFolder.Prepare(outDir);
+        OutputFolder.RefuseForeignFiles(outDir, files.Select(f => (f.Path, f.Content)));
+        foreach (var (path, content) in files)
+        {
+            if (OutputFolder.IsUnchanged(outDir, path, content.Span))
+                console.Out.WriteLine($"unchanged {Path.Combine(outDir, path)} ({content.Length} bytes, already these bytes)");
+            else
+            {
+                OutputFolder.WriteAtomically(outDir, path, content);
+                console.Out.WriteLine($"wrote {Path.Combine(outDir, path)} ({content.Length} bytes)");
+            }
+        }
+        foreach (var s in scenes)
+            console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"view {s.Name}: {string.Join(", ", s.Groups.Select(g => $"{g.Name} {g.ShapeCount}"))} shape(s), {s.Groups.Sum(g => g.Objects.Sum(o => o.Shapes.Sum(x => x.TriangleCount)))} triangles"));
+        return ExitCodes.Ok;
+    }
+}

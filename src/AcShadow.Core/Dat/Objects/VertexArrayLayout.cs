@@ -1,0 +1,27 @@
+using System.Numerics;
+
+namespace AcShadow.Core.Dat.Objects;
+
+/// <summary>
+/// The SW vertex array a GfxObj and a CellStruct both carry: type 1, a uint count, then per vertex its id,
+/// UV count, origin, normal and UVs. Collision needs only the origins; normals and UVs are stepped over.
+/// </summary>
+internal static class VertexArrayLayout
+{
+    internal static Dictionary<ushort, Vector3> Read(DatBinaryReader r)
+    {
+        var vertexType = r.ReadInt32();
+        if (vertexType != 1) throw new DatFormatException($"vertex type {vertexType} is not the SW vertex type (1)");
+        var count = r.ReadCount(r.ReadUInt32(), 28, "vertex");
+        var vertices = new Dictionary<ushort, Vector3>(count);
+        for (var i = 0; i < count; i++)
+        {
+            var key = r.ReadUInt16();
+            var uvCount = r.ReadUInt16();
+            var origin = r.ReadVector3();
+            r.Skip(12 + uvCount * 8); // normal and UVs: drawing only
+            vertices[key] = origin;
+        }
+        return vertices;
+    }
+}

@@ -1,0 +1,59 @@
+using System.Numerics;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Core.Cells;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Cells;
+
+namespace AcShadow.Core.Json;
+
+/// <summary>
+/// Writes a <see cref="CellFile"/> in acdream's EnvCell fixture shape (its CellDump record): CellId (a
+/// number), WorldTransform and InverseWorldTransform as {M11 … M44} (System.Numerics' row-vector
+/// convention, <see cref="CellMatrices"/>; the frame is the landblock-relative one, as acdream's own
+/// captured cells are), ResolvedPolygons (physics polygons with a plane, cell frame), PortalPolygons (each
+/// portal polygon once, by id), Portals {OtherCellId, PolygonId, Flags} with the dat's 16-bit ids (0xFFFF:
+/// outside) and VisibleCellIds as full cell ids. The BSP tree, the objects inside and degenerate polygons
+/// are not in that shape.
+/// </summary>
+public static class AcdreamCellWriter
+{
+    public static byte[] Write(CellFile cell) => CanonicalJsonWriter.WriteUtf8(ToJson(cell));
+
+    /// <summary>How many polygons the file carries (physics polygons with a plane, then portal polygons).</summary>
+    public static int PolygonCount(CellFile cell) => cell.Physics.Polygons.Count(p => p.Plane is not null);
+
+    public static JsonObj ToJson(CellFile cell)
+    {
+        var frame = new Frame(cell.LandblockOrigin, cell.Orientation);
+        var positions = cell.Physics.Vertices.ToDictionary(v => v.Id, v => v.Position);
+        var portalPolygons = cell.Portals.Where(p => p.Plane is not null).DistinctBy(p => p.PolygonId).OrderBy(p => p.PolygonId);
+        return new JsonObj()
+            .Add("CellId", JsonNum.Of((long)cell.CellId))
+            .Add("WorldTransform", Matrix(CellMatrices.World(frame)))
+            .Add("InverseWorldTransform", Matrix(CellMatrices.Inverse(frame)))
+            .Add("ResolvedPolygons", JsonArr.Of(cell.Physics.Polygons.Where(p => p.Plane is not null), p =>
+                Polygon(p.Id, p.VertexIds.Count, (int)p.SidesType, p.Plane!.Value, p.VertexIds.Select(id => positions[id]))))
+            .Add("PortalPolygons", JsonArr.Of(portalPolygons, p =>
+                Polygon(p.PolygonId, p.Vertices.Count, (int)SidesType.Landblock, p.Plane!.Value, p.Vertices)))
+            .Add("Portals", JsonArr.Of(cell.Portals, p => new JsonObj()
+                .Add("OtherCellId", (int)(p.OtherCellId & 0xFFFF))
+                .Add("PolygonId", p.PolygonId)
+                .Add("Flags", p.Flags)))
+            .Add("VisibleCellIds", JsonArr.Of(cell.VisibleCells, v => JsonNum.Of((long)v)));
+    }
+
+    private static JsonObj Polygon(int id, int points, int sidesType, Plane plane, IEnumerable<Vector3> vertices) => new JsonObj()
+        .Add("Id", id)
+        .Add("NumPoints", points)
+        .Add("SidesType", sidesType)
+        .Add("Plane", new JsonObj().Add("Normal", Xyz(plane.Normal)).Add("D", plane.D))
+        .Add("Vertices", JsonArr.Of(vertices, v => Xyz(v)));
+
+    private static JsonObj Matrix(Matrix4x4 m) => new JsonObj()
+        .Add("M11", m.M11).Add("M12", m.M12).Add("M13", m.M13).Add("M14", m.M14)
+        .Add("M21", m.M21).Add("M22", m.M22).Add("M23", m.M23).Add("M24", m.M24)
+        .Add("M31", m.M31).Add("M32", m.M32).Add("M33", m.M33).Add("M34", m.M34)
+        .Add("M41", m.M41).Add("M42", m.M42).Add("M43", m.M43).Add("M44", m.M44);
+
+    private static JsonObj Xyz(Vector3 v) => new JsonObj().Add("X", v.X).Add("Y", v.Y).Add("Z", v.Z);
+}

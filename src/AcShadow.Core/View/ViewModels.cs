@@ -1,0 +1,39 @@
+using AcShadow.Core.Chart.Models;
+
+namespace AcShadow.Core.View;
+
+/// <summary>
+/// The layers a view can hold, in the order a file lists them: the chart's shape models that have geometry
+/// to show (the retail reference, the seed's union, the buggy client's one cylinder, the Setup's own
+/// spheres), a compiled scene's chosen models, then the chart's failures. Colours are the Okabe–Ito ones
+/// the chart uses where they mean the same thing.
+/// </summary>
+public static class ViewModels
+{
+    public const string Retail = "retail";
+    public const string Union = "union";
+    public const string FallbackCylinder = "fallback-cylinder";
+    public const string Spheres = "spheres";
+    public const string Compiled = "compiled";
+
+    public static IReadOnlyList<string> Order { get; } = [Retail, Union, FallbackCylinder, Spheres, Compiled];
+
+    public static string Colour(string model) => model switch
+    {
+        Retail => "#56606e",
+        Union => "#cc79a7",
+        FallbackCylinder => "#d55e00",
+        Spheres => "#009e73",
+        _ => "#e69f00",
+    };
+
+    public static string Description(string model) =>
+        model == Compiled ? "the compiled scene's chosen model for each object"
+        : ShapeModels.Find(model)?.Description ?? model;
+
+    public const string FalsePassColour = "#d62728";
+    public const string FalseBlockColour = "#1f77b4";
+
+    /// <summary>A failure layer's name: "false passes: fallback-cylinder".</summary>
+    public static string FailureGroup(bool falsePass, string model) => (falsePass ? "false passes: " : "false blocks: ") + model;
+}
