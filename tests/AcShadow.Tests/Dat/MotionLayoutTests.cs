@@ -44,6 +44,53 @@ public class MotionLayoutTests
         0x00, 0x00, 0x00, 0x00,
     ];
 
+    // id 0x03000200, no flags, 1 part, 2 frames. Frame 0: the part at (0, 0, 1) identity, then 2 hooks: a
+    // ReplaceObject (type 5, forward) of part 0 by 0x0100C0DE in the long packed form (0x8000, then 0xC0DE: a
+    // 6-byte payload that leaves what follows 2 bytes off a 4-byte boundary, unpadded), and an Ethereal (type 6,
+    // backward -1) set true as a uint32. Frame 1: the part at (0, 0, 2) turned 90 deg about Z (W = Z = 0.70710677,
+    // 0x3F3504F3), no hooks.
+    private static readonly byte[] HookedAnim =
+    [
+        0x00, 0x02, 0x00, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00,
+        0, 0, 0, 0, 0, 0, 0, 0, 0x00, 0x00, 0x80, 0x3F, 0x00, 0x00, 0x80, 0x3F, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+        0x02, 0x00, 0x00, 0x00,
+        0x05, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80, 0xDE, 0xC0,
+        0x06, 0x00, 0x00, 0x00, 0xFF, 0xFF, 0xFF, 0xFF, 0x01, 0x00, 0x00, 0x00,
+        0, 0, 0, 0, 0, 0, 0, 0, 0x00, 0x00, 0x00, 0x40, 0xF3, 0x04, 0x35, 0x3F, 0, 0, 0, 0, 0, 0, 0, 0, 0xF3, 0x04, 0x35, 0x3F,
+        0x00, 0x00, 0x00, 0x00,
+    ];
+
+    [Fact]
+    public void An_animation_frame_reads_its_hooks_exactly_by_type_and_the_next_frame_where_the_hooks_end()
+    {
+        var a = Animation.Read(new DatBinaryReader(HookedAnim));
+        Assert.Equal(0x03000200u, a.Id);
+        Assert.Null(a.PosFrames);
+        Assert.Equal(2, a.PartFrames.Count);
+        var first = a.PartFrames[0];
+        Assert.Equal(new Vector3(0, 0, 1), Assert.Single(first.Frames).Origin);
+        Assert.Equal(
+            [(AnimationHookType.ReplaceObject, 1, "partIndex=0 gfxObjId=0x0100C0DE"), (AnimationHookType.Ethereal, -1, "ethereal=true")],
+            first.Hooks.Select(h => (h.Type, h.Direction, h.FieldText())));
+        var second = Assert.Single(a.PartFrames[1].Frames);
+        Assert.Equal(new Vector3(0, 0, 2), second.Origin);
+        Assert.Equal(new Quaternion(0, 0, 0.70710677f, 0.70710677f), second.Orientation);
+        Assert.Empty(a.PartFrames[1].Hooks);
+
+        var w = new DatBinaryWriter();
+        a.Write(w);
+        Assert.Equal(HookedAnim, w.ToArray());
+    }
+
+    [Fact]
+    public void An_animation_whose_counts_multiply_past_any_size_is_refused_not_allocated()
+    {
+        // NumParts and NumFrames both 0x7FFFFFFF: their product of bytes overflows a 64-bit count.
+        byte[] bytes = [0x00, 0x02, 0x00, 0x03, 0, 0, 0, 0, 0xFF, 0xFF, 0xFF, 0x7F, 0xFF, 0xFF, 0xFF, 0x7F, 0, 0, 0, 0];
+        var e = Assert.Throws<DatFormatException>(() => Animation.Read(new DatBinaryReader(bytes)));
+        Assert.Contains("cannot fit", e.Message);
+    }
+
     [Fact]
     public void A_hand_written_motion_table_reads_field_by_field_and_writes_back_byte_for_byte()
     {

@@ -134,4 +134,18 @@ public class SamplePoseTests
         foreach (var id in portal.ListIds(DatObjectKind.Setup)) engine.ExportSetup(id);
         Assert.Equal(distinct, portal.MotionObjectsDecoded);
     }
+
+    [Fact]
+    public void A_whole_dat_batch_on_two_jobs_with_a_bounded_cache_decodes_each_motion_object_once()
+    {
+        // As batch runs: two workers, and a GfxObj/Setup cache smaller than the dat; the motion objects stay.
+        using var portal = SampleDat.OpenPortal();
+        var source = new DatDatabase(portal.Archive, cacheCapacity: 2);
+        var selection = new BatchSelection(true, true, null, null);
+        var plan = BatchPlanner.Plan(selection, source, null, DoorCatalog.SetupIds);
+        var options = new ShapeBuildOptions(ShapePolicy.Retail);
+        var result = BatchRunner.Run(source, options, plan, new BatchInputs(source.Info, null, options.Policy, 1f, selection), jobs: 2);
+        Assert.Equal(portal.ListIds(DatObjectKind.Setup).Count, result.SetupsWritten);
+        Assert.Equal(6, source.MotionObjectsDecoded);
+    }
 }

@@ -18,9 +18,10 @@ public sealed record Animation(uint Id, uint Flags, int NumParts, IReadOnlyList<
         var numParts = r.ReadUInt32();
         var numFrames = r.ReadUInt32();
         var posFrames = (flags & HasPosFrames) != 0;
-        // Each frame needs its part frames, its hook count and, when flagged, a root frame.
+        // Each frame needs its part frames, its hook count and, when flagged, a root frame; dividing the bytes
+        // left (rather than multiplying the counts) cannot overflow whatever the counts say.
         var perFrame = (long)numParts * FrameBytes + 4 + (posFrames ? FrameBytes : 0);
-        if (numParts > int.MaxValue || numFrames > int.MaxValue || numFrames * perFrame > r.Remaining)
+        if (numParts > int.MaxValue || numFrames > int.MaxValue || (numFrames > 0 && perFrame > r.Remaining / numFrames))
             throw new DatFormatException($"{numFrames} frame(s) of {numParts} part(s) cannot fit in the {r.Remaining} byte(s) left");
         Frame[]? pos = null;
         if (posFrames)

@@ -58,13 +58,10 @@ public sealed record Setup(
         var placements = new PlacementFrame[placementCount];
         for (var p = 0; p < placementCount; p++)
         {
+            // A placement frame is an AnimationFrame of the Setup's part count, read by the same reader.
             var key = r.ReadUInt32();
-            var frames = new Frame[numParts];
-            for (var i = 0; i < numParts; i++) frames[i] = Frame.Read(r);
-            var hooks = new AnimationHook[r.ReadCount(r.ReadUInt32(), AnimationHookLayout.HeaderBytes, "animation hook")];
-            for (var h = 0; h < hooks.Length; h++)
-                hooks[h] = AnimationHook.Read(r, $"placement {Placement.Name(key)}, hook {h + 1} of {hooks.Length}");
-            placements[p] = new PlacementFrame(key, frames) { Hooks = hooks };
+            var frame = AnimationFrame.Read(r, numParts, $"placement {Placement.Name(key)}");
+            placements[p] = new PlacementFrame(key, frame.Frames) { Hooks = frame.Hooks };
         }
 
         var cylCount = r.ReadCount(r.ReadUInt32(), 20, "CylSphere");
