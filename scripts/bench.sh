@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the benchmark harness (tools/AcShadow.Bench, `harness`): forges the scale dat and its quarter-size
 # twin (cached in .bench-cache/ by their parameters), measures the floor, the naive exporter, batch at one
-# job and at all cores, --incremental, dump against --version, a landblock batch with and without its
+# job and at all cores, --incremental, doctor, dump against --version, a landblock batch with and without its
 # indoor cells and the collision reference, writes
 # bench.json and prints the table. Extra arguments go to the harness: --small (CI size), --setups N,
 # --gfxobjs M, --seed S, --reps R, --out FILE, --work DIR (the disk folder the write workloads use),

@@ -6,7 +6,7 @@ namespace AcShadow.Fixtures;
 /// The first thing every reader does: read <c>format</c> and refuse a version it does not know, saying
 /// which one it reads and what to do, rather than misreading fields that may have changed meaning.
 /// </summary>
-public static class FormatCheck
+internal static class FormatCheck
 {
     public static void Require(JsonElement root, string expected, string what)
     {

@@ -10,10 +10,10 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Core.View;
-using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;
 

@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Numerics;
+using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.View;
 
@@ -23,7 +24,7 @@ public sealed record ChartFailure(uint ObjectId, string Model, bool FalsePass, V
             // Model names are plain words, so no field is quoted.
             var f = lines[n].Split(',');
             if (f.Length < header.Length) throw new FormatException($"failures.csv line {n + 1}: {f.Length} fields, the header has {header.Length}");
-            if (!Fixtures.Json.JsonIds.TryParse(f[setup], out var id)) throw new FormatException($"failures.csv line {n + 1}: \"{f[setup]}\" is not an id");
+            if (!AcShadow.Fixtures.Json.JsonIds.TryParse(f[setup], out var id)) throw new FormatException($"failures.csv line {n + 1}: \"{f[setup]}\" is not an id");
             var falsePass = f[failure] switch
             {
                 "false_pass" => true,

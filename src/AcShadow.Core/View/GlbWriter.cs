@@ -13,7 +13,8 @@ namespace AcShadow.Core.View;
 /// toward the viewer, so every position, normal and rotation axis is converted explicitly as
 /// (x, y, z)_dat → (x, z, −y)_glTF, a proper rotation (−90° about x): winding and handedness are kept.
 /// Materials: one per group and sidedness (glTF sets double-sidedness per material). No timestamps; the same
-/// scene gives the same bytes.
+/// scene gives the same bytes. No <c>extras</c>: SharpGLTF's setter for them is not trimming-safe, and the
+/// tool ships as a Native AOT binary.
 /// </summary>
 public static class GlbWriter
 {
@@ -30,12 +31,6 @@ public static class GlbWriter
         var scene = model.UseScene(view.Name);
         var root = scene.CreateNode(view.Name);
         if (view.WorldOrigin != Vector3.Zero) root.LocalTransform = new AffineTransform(null, null, ToGltf(view.WorldOrigin));
-        root.Extras = new System.Text.Json.Nodes.JsonObject
-        {
-            ["title"] = view.Title,
-            ["units"] = "metres",
-            ["axes"] = "glTF Y-up; from the dat's Z-up (x east, y north, z up) as (x, y, z) -> (x, z, -y)",
-        };
         var meshes = new Dictionary<ViewShape, Mesh>(ReferenceEqualityComparer.Instance);
         foreach (var group in view.Groups)
         {

@@ -21,8 +21,8 @@ public static class ThreeViewSvg
     {
         var layout = Layout(view);
         var svg = new SvgDocument(layout.Width, layout.Height);
-        svg.Text(20, 28, view.Title + ": top, front and side views, metres", 17, "start", "bold");
-        svg.Text(20, 48, "Axes as in the dat: x east, y north, z up. One scale for all three views; numbers name the shapes listed below.", 12);
+        svg.Text(20, 28, view.Title, 17, "start", "bold");
+        svg.Text(20, 48, "Top, front and side views in metres, one scale for all three; axes as in the dat (x east, y north, z up). Numbers name what is listed below.", 12);
         Legend(svg, view, 20, 70);
 
         Panel(svg, layout.TopCorner, layout.SpanX, layout.SpanY, "top: from above (x →, y ↑)");
@@ -38,10 +38,12 @@ public static class ThreeViewSvg
                 }
 
         var keys = Keys(view);
+        // A single object's shapes are told apart from the front; a landblock's objects from above.
+        Func<Vector3, (double X, double Y)> keyView = view.Groups.Count > 0 && view.Groups[0].Objects.Count > 1 ? layout.Top : layout.Front;
         for (var k = 0; k < keys.Count; k++)
         {
             var (at, _) = keys[k];
-            var (x, y) = layout.Front(at);
+            var (x, y) = keyView(at);
             svg.Circle(x, y, 8, "#ffffff", "#222222", 0.8);
             svg.Text(x, y + 4, I(k + 1), 10, "middle", "bold");
         }

@@ -24,7 +24,7 @@ public static class ViewSceneBuilder
     public static ViewScene ForLandblock(uint landBlockInfoId, Vector3 worldOrigin, IReadOnlyList<ViewPlacement> placements,
         IReadOnlyList<ChartFailure> failures, IReadOnlyList<string> notes) =>
         Build(LandblockIds.Short(landBlockInfoId),
-            string.Create(CultureInfo.InvariantCulture, $"Landblock {LandblockIds.Short(landBlockInfoId)}: {placements.Count} placed object(s), world origin ({worldOrigin.X}, {worldOrigin.Y})"),
+            string.Create(CultureInfo.InvariantCulture, $"Landblock {LandblockIds.Short(landBlockInfoId)}: {placements.Count} object(s), world origin ({worldOrigin.X}, {worldOrigin.Y})"),
             worldOrigin, placements, failures, single: false, notes);
 
     private static ViewScene Build(string name, string title, Vector3 worldOrigin, IReadOnlyList<ViewPlacement> placements,

@@ -13,7 +13,7 @@ namespace AcShadow.Tests.Bench;
 [Trait("Speed", "Slow")]
 public sealed class HarnessTests
 {
-    private static readonly string[] Measured = ["floor", "naive", "batch", "batch --incremental"];
+    private static readonly string[] Measured = ["floor", "naive", "batch", "batch --incremental", "doctor"];
 
     [Fact]
     public void A_tiny_harness_run_writes_every_figure_to_bench_json()
@@ -66,7 +66,7 @@ public sealed class HarnessTests
 
         var ratios = root.GetProperty("ratios").EnumerateArray().ToArray();
         Assert.Equal(report.Ratios.Select(r => r.Name), ratios.Select(r => r.GetProperty("name").GetString()));
-        Assert.Equal(17, ratios.Length); // five write-workload targets on each of disk and memory, seven others
+        Assert.Equal(19, ratios.Length); // five write-workload targets on each of disk and memory, nine others (two of them the doctor's)
         Assert.Contains(ratios, r => r.GetProperty("name").GetString()!.EndsWith("(memory)", StringComparison.Ordinal));
         Assert.All(ratios, r => Assert.True(r.GetProperty("value").GetDouble() > 0, r.ToString()));
         Assert.Contains("| Target | Measured | Goal | Met |", log.ToString());

@@ -2,12 +2,12 @@ using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Tests.Errors;
 using AcShadow.Tests.Forge;
 using AcShadow.Tests.Support;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Bsp;
 

@@ -115,13 +115,13 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     }
 
     [Theory]
-    [InlineData("dump/setups/0x020019FF.shadow.json", "\"format\": \"acshadow.shadow/2\"", "\"format\": \"acshadow.shadow/1\"", "is not \"acshadow.shadow/2\"")]
-    [InlineData("dump/setups/0x020019FF.shadow.json", "\"collisionType\": \"bsp\"", "\"collisionType\": \"box\"", "is not one of")]
-    [InlineData("dump/gfxobjs/0x010044B5.bsp.json", "\"gfxObjId\": \"0x010044B5\"", "\"gfxObjId\": \"0x10044B5\"", "does not match")]
-    [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"NumPoints\": 4", "\"NumPoints\": \"4\"", "is not of type")]
-    [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"GfxObjId\": 16794805", "\"GfxObjId\": 16794805, \"format\": \"x\"", "\"format\" is not allowed")]
-    [InlineData("batch/index.json", "\"kind\": \"acdream\"", "\"kind\": \"gfxobj\"", "is not one of")]
-    [InlineData("batch/scene.json", "\"landblockId\": \"0xA9B4FFFE\",", "", "missing \"landblockId\"")]
+    [InlineData("dump/setups/0x020019FF.shadow.json", "\"format\": \"acshadow.shadow/2\"", "\"format\": \"acshadow.shadow/1\"", "/format: const:")]
+    [InlineData("dump/setups/0x020019FF.shadow.json", "\"collisionType\": \"bsp\"", "\"collisionType\": \"box\"", "/shapes/0/collisionType: enum:")]
+    [InlineData("dump/gfxobjs/0x010044B5.bsp.json", "\"gfxObjId\": \"0x010044B5\"", "\"gfxObjId\": \"0x10044B5\"", "/gfxObjId: pattern:")]
+    [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"NumPoints\": 4", "\"NumPoints\": \"4\"", "/NumPoints: type:")]
+    [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"GfxObjId\": 16794805", "\"GfxObjId\": 16794805, \"format\": \"x\"", "/format: : All values fail against the false schema")]
+    [InlineData("batch/index.json", "\"kind\": \"acdream\"", "\"kind\": \"gfxobj\"", ": enum:")]
+    [InlineData("batch/scene.json", "\"landblockId\": \"0xA9B4FFFE\",", "", ": required:")]
     public void A_file_that_breaks_its_schema_is_reported(string file, string from, string to, string expected)
     {
         var validator = LoadSchemas();

@@ -2,15 +2,15 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Numerics;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.View;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Fixtures;
 using AcShadow.Tests.Support;
 using SharpGLTF.Schema2;
 using SharpGLTF.Validation;
-using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Tests.View;
 
@@ -227,6 +227,17 @@ public sealed class ViewCommandTests
         var (ex, ey) = layout.Front(centre with { Z = hi.Z + 0.12f });
         var empty = png.At((int)ex, (int)ey);
         Assert.True(empty.R > 240 && empty.G > 240 && empty.B > 240, $"pixel ({ex:0}, {ey:0}) above the door should be empty, is {empty}");
+    }
+
+    [Fact]
+    public void The_committed_drawing_of_the_sample_door_is_what_view_writes()
+    {
+        using var dir = new TempDir();
+        Run(dir, "--setup", "0x020019FF");
+        var docs = Path.Combine(Path.GetDirectoryName(CommittedFixturesTests.RepositoryFixtures())!, "docs", "view");
+        foreach (var name in new[] { "0x020019FF.glb", "0x020019FF.svg" })
+            Assert.True(File.ReadAllBytes(Path.Combine(docs, name)).AsSpan().SequenceEqual(File.ReadAllBytes(Path.Combine(dir.Path, name))),
+                $"docs/view/{name} is stale: rerun `acshadow view --setup 0x020019FF --out docs/view`");
     }
 
     private static void Rasterise(string svg, string png)

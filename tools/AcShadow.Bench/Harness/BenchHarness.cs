@@ -7,7 +7,7 @@ namespace AcShadow.Bench.Harness;
 /// <summary>
 /// One harness run: forge (or reuse) the scale dat and its quarter-size twin, then measure side by side,
 /// each warmed once and repeated: the floor, the naive exporter, `batch --all` at one job and at all
-/// cores, `--incremental` with nothing to do, `dump` against `--version`, the busiest landblock's scene with
+/// cores, `--incremental` with nothing to do, `doctor`, `dump` against `--version`, the busiest landblock's scene with
 /// and without its indoor cells, and the collision reference
 /// against brute force; check the outputs are byte-identical; write bench.json and print the table.
 /// </summary>
@@ -35,6 +35,8 @@ public static class BenchHarness
                 foreach (var jobs in jobCounts)
                     timings.Add(Measure(log, options, "floor", size, jobs, "none", "read and decode every Setup and the GfxObjs its parts name, discard (bench process)",
                         _ => ProcessRunner.Run(BenchExecutable, ["floor", "--dat", dat.Directory, "--jobs", Text(jobs)])));
+                timings.Add(Measure(log, options, "doctor", size, cores, "none", $"acshadow doctor --jobs {cores}: every check, and batch --all twice in memory",
+                    _ => ProcessRunner.Run(options.Cli, ["doctor", "--dat", dat.Directory, "--jobs", Text(cores)])));
                 foreach (var (output, root) in OutputPlaces(options))
                 {
                     var place = new RunFolders(root, output == "disk");

@@ -57,6 +57,8 @@ public sealed record BenchReport(
             new($"peak MiB, batch {cores} jobs (full)", batchN.PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all"),
             new("peak MiB, batch 1 job (full)", batch1.PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all --jobs 1"),
             new($"peak full / quarter, batch {cores} jobs", batchN.PeakMedianMiB / Get("batch", "quarter", cores).PeakMedianMiB, "<=", 1.3, "how peak memory grows with the dat"),
+            new($"doctor / batch, {cores} jobs", Get("doctor", "full", cores, "none").Median / batchN.Median, "<=", 2, "acshadow doctor over batch --all, both at all cores, batch writing to disk"),
+            new($"peak full / quarter, doctor {cores} jobs", Get("doctor", "full", cores, "none").PeakMedianMiB / Get("doctor", "quarter", cores, "none").PeakMedianMiB, "<=", 1.3, "how the doctor's peak memory grows with the dat"),
             new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
                 $"per-query speed-up of the collision reference on GfxObjs of {CollisionComparison.MinPolygons}+ polygons"),
         ]);

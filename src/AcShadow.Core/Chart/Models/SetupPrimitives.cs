@@ -46,7 +46,7 @@ public sealed record SetupPrimitives(IReadOnlyList<CylSphere> CylSpheres, IReadO
     }
 
     /// <summary>
-    /// The one cylinder the buggy client registered (seed §1): the first CylSphere; else the first Sphere as a
+    /// The one cylinder the buggy client registered: the first CylSphere; else the first Sphere as a
     /// cylinder of height 2r based at the sphere's centre (as the seed's builder places it); else the Setup's
     /// Radius × Height standing at the entity origin, reported as the Setup's sphere −1.
     /// </summary>

@@ -58,15 +58,7 @@ public sealed record CellStruct(
         w.WriteUInt32((uint)Polygons.Count);
         w.WriteUInt32((uint)PhysicsPolygons.Count);
         w.WriteUInt32((uint)Portals.Count);
-        w.WriteInt32(1);
-        w.WriteUInt32((uint)Vertices.Count);
-        foreach (var (key, origin) in Vertices.OrderBy(kv => kv.Key))
-        {
-            w.WriteUInt16(key);
-            w.WriteUInt16(0);
-            w.WriteVector3(origin);
-            w.WriteVector3(Vector3.Zero);
-        }
+        VertexArrayLayout.Write(w, Vertices);
         foreach (var (key, polygon) in Polygons)
         {
             w.WriteUInt16(key);

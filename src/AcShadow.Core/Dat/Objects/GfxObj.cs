@@ -54,15 +54,7 @@ public sealed record GfxObj(
         w.WriteUInt32((uint)Flags);
         w.WriteCompressedUInt32((uint)Surfaces.Count);
         foreach (var s in Surfaces) w.WriteUInt32(s);
-        w.WriteInt32(1);
-        w.WriteUInt32((uint)Vertices.Count);
-        foreach (var (key, origin) in Vertices.OrderBy(kv => kv.Key))
-        {
-            w.WriteUInt16(key);
-            w.WriteUInt16(0);
-            w.WriteVector3(origin);
-            w.WriteVector3(Vector3.Zero);
-        }
+        VertexArrayLayout.Write(w, Vertices);
         if (Flags.HasFlag(GfxObjFlags.HasPhysics))
         {
             w.WriteCompressedUInt32((uint)PhysicsPolygons.Count);

@@ -24,4 +24,18 @@ internal static class VertexArrayLayout
         }
         return vertices;
     }
+
+    /// <summary>Origins in id order, each with no UVs and a zero normal: what collision reads, nothing more.</summary>
+    internal static void Write(DatBinaryWriter w, IReadOnlyDictionary<ushort, Vector3> vertices)
+    {
+        w.WriteInt32(1);
+        w.WriteUInt32((uint)vertices.Count);
+        foreach (var (key, origin) in vertices.OrderBy(kv => kv.Key))
+        {
+            w.WriteUInt16(key);
+            w.WriteUInt16(0);
+            w.WriteVector3(origin);
+            w.WriteVector3(Vector3.Zero);
+        }
+    }
 }
