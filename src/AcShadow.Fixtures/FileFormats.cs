@@ -11,7 +11,7 @@ public sealed record FileFormat(string Name, string Format, string PathPattern, 
 /// </summary>
 public static class FileFormats
 {
-    public const string Shadow = "acshadow.shadow/1";
+    public const string Shadow = "acshadow.shadow/2";
     public const string Bsp = "acshadow.bsp/1";
     public const string Index = "acshadow.index/1";
     public const string Scene = "acshadow.scene/1";
@@ -31,8 +31,8 @@ public static class FileFormats
 
     public static IReadOnlyList<FileFormat> All { get; } =
     [
-        new("shadow", Shadow, "setups/0x%08X.shadow.json", "urn:acshadow:schema:acshadow.shadow-1",
-            "one Setup's collision shapes (the seed's ShadowShape fields) and the Setup facts behind them"),
+        new("shadow", Shadow, "setups/0x%08X.shadow.json", "urn:acshadow:schema:acshadow.shadow-2",
+            "one Setup's collision shapes (the seed's ShadowShape fields), the pose its parts are in and the Setup facts behind them"),
         new("bsp", Bsp, "gfxobjs/0x%08X.bsp.json", "urn:acshadow:schema:acshadow.bsp-1",
             "one GfxObj's physics polygons, planes and PhysicsBSP tree"),
         new("scene", Scene, "scene.json", "urn:acshadow:schema:acshadow.scene-1",

@@ -28,6 +28,13 @@ public static class SampleSpecAuthor
     /// <summary>Where both cottage cells sit in the landblock: one origin, turned 90° about Z.</summary>
     public static readonly Vector3 CottageOrigin = new(60, 60, 12);
 
+    // Motion: door tables use the ids the door catalog names for these door Setups.
+    public const uint DoorMotionTable = 0x09000202, DoorClosedAnim = 0x03000100, DoorOpenAnim = 0x03000101, DoorSwingAnim = 0x03000102;
+    public const uint NoDefaultCycleTable = 0x09000016, NoDefaultCycleOpenAnim = 0x03000016;
+    public const uint AnimatedStaticSetup = 0x02003500, AnimatedStaticTable = 0x09003500, AnimatedStaticAnim = 0x03003500;
+    public const uint DefaultAnimationSetup = 0x02003600, DefaultAnimationAnim = 0x03003600;
+    public const uint NonCombat = 0x8000003D, Ready = 0x41000003, On = 0x4000000B, Off = 0x4000000C;
+
     public static ForgeSpec Create() => new()
     {
         Iteration = 1,
@@ -79,7 +86,8 @@ public static class SampleSpecAuthor
             {
                 Id = Hex(DoorSetup),
                 Comment = "3-part door: leaf + two jambs, the second mirrored by 180 deg about Z so both thresholds span the doorway. "
-                    + "Default (leaf open 90 deg about its hinge) differs from Resting (closed) and is listed first: retail asks for Resting.",
+                    + "Default (leaf open 90 deg about its hinge) differs from Resting (closed) and is listed first: retail asks for Resting. "
+                    + "Its catalog motion table 0x09000202 closes it 5 cm along x from where Resting puts it, and opens it 90 deg.",
                 Parts = [Hex(DoorLeaf), Hex(DoorJamb), Hex(DoorJamb)],
                 Placements = new Dictionary<string, IReadOnlyList<FrameSpec>?>
                 {
@@ -94,7 +102,7 @@ public static class SampleSpecAuthor
             new SetupSpec
             {
                 Id = Hex(SinglePartDoorSetup),
-                Comment = "single-part door: one GfxObj holds leaf and frame; Resting only",
+                Comment = "single-part door: one GfxObj holds leaf and frame; Resting only. Its catalog motion table 0x09000016 lacks its default cycle",
                 Parts = [Hex(SinglePartDoor)],
                 Placements = Place(("Resting", [At(0, 0, 0)])),
                 Spheres = [new SphereSpec { Center = [0, 0, 0.02], Radius = 0.1 }],
@@ -105,7 +113,7 @@ public static class SampleSpecAuthor
             new SetupSpec
             {
                 Id = Hex(DoubleDoorSetup),
-                Comment = "double door, 4 parts: two leaves (one GfxObj, mirrored), lintel, frame; Default swings both leaves open",
+                Comment = "double door, 4 parts: two leaves (one GfxObj, mirrored), lintel, frame; Default swings both leaves open. Catalog motion table 0x09000016 (no default cycle)",
                 Parts = [Hex(DoubleDoorLeaf), Hex(DoubleDoorLeaf), Hex(DoubleDoorLintel), Hex(DoubleDoorFrame)],
                 Placements = Place(
                     ("Resting", [At(-0.95, 0, 0), At(0.95, 0, 0, Z(180)), At(0, 0, 0), At(0, 0, 0)]),
@@ -198,6 +206,30 @@ public static class SampleSpecAuthor
             },
             new SetupSpec
             {
+                Id = Hex(AnimatedStaticSetup),
+                Comment = "animated static: a motion table whose default cycle's animation has part frames for 1 of its 2 parts (the pedestal, raised 0.25 m); "
+                    + "it also names a DefaultAnimation, which the motion table's default state replaces",
+                Parts = [Hex(Pedestal), Hex(Column)],
+                Placements = Place(("Resting", [At(0, 0, 0), At(0, 0, 0.5)])),
+                DefaultAnimation = Hex(DefaultAnimationAnim),
+                DefaultMotionTable = Hex(AnimatedStaticTable),
+                Radius = 0.8,
+                Height = 2.5,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(DefaultAnimationSetup),
+                Comment = "a DefaultAnimation and no motion table: its first frame moves the column 0.3 m along x from Resting",
+                Parts = [Hex(Column)],
+                Placements = Place(("Resting", [At(0, 0, 0)])),
+                DefaultAnimation = Hex(DefaultAnimationAnim),
+                Radius = 0.4,
+                Height = 2,
+                Flags = ["HasPhysicsBsp"],
+            },
+            new SetupSpec
+            {
                 Id = Hex(BuildingSetup),
                 Comment = "building Setup around the house GfxObj (the landblock also places the GfxObj bare, as a building)",
                 Parts = [Hex(House)],
@@ -215,6 +247,93 @@ public static class SampleSpecAuthor
                 Radius = 2,
                 Height = 3.2,
                 Flags = ["HasPhysicsBsp"],
+            },
+        ],
+        MotionTables =
+        [
+            new MotionTableSpec
+            {
+                Id = Hex(DoorMotionTable),
+                Comment = "door: NonCombat starts Off (closed); On is open; links swing the leaf between them",
+                DefaultStyle = Hex(NonCombat),
+                StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Off) }],
+                Cycles =
+                [
+                    new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Off), Anims = [Anim(DoorClosedAnim)] },
+                    new MotionSpec { Style = Hex(NonCombat), Motion = Hex(On), Anims = [Anim(DoorOpenAnim)] },
+                ],
+                Links =
+                [
+                    new LinkSpec { Style = Hex(NonCombat), From = Hex(Off), To = Hex(On), Anims = [Anim(DoorSwingAnim)] },
+                    new LinkSpec { Style = Hex(NonCombat), From = Hex(On), To = Hex(Off), Anims = [Anim(DoorSwingAnim, -30)] },
+                ],
+            },
+            new MotionTableSpec
+            {
+                Id = Hex(NoDefaultCycleTable),
+                Comment = "broken door table: NonCombat's default substate is Off, but there is no Off cycle (only On): the default state fails",
+                DefaultStyle = Hex(NonCombat),
+                StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Off) }],
+                Cycles = [new MotionSpec { Style = Hex(NonCombat), Motion = Hex(On), Anims = [Anim(NoDefaultCycleOpenAnim)] }],
+            },
+            new MotionTableSpec
+            {
+                Id = Hex(AnimatedStaticTable),
+                Comment = "animated static: NonCombat Ready plays an animation that poses only part 0",
+                DefaultStyle = Hex(NonCombat),
+                StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Ready) }],
+                Cycles = [new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Ready), Anims = [Anim(AnimatedStaticAnim)], Omega = [0, 0, 0.5] }],
+            },
+        ],
+        Animations =
+        [
+            new AnimationSpec
+            {
+                Id = Hex(DoorClosedAnim),
+                Comment = "door closed: leaf 5 cm towards the first jamb from where Resting puts it, jambs as Resting",
+                Parts = 3,
+                Frames = [[At(0.05, 0, 0), At(1, 0, 0), At(-1, 0, 0, Z(180))]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(DoorOpenAnim),
+                Comment = "door open: leaf turned 90 deg about Z around its hinge edge (local x = 0.965)",
+                Parts = 3,
+                Frames = [[At(0.965, -0.965, 0, Z(90)), At(1, 0, 0), At(-1, 0, 0, Z(180))]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(DoorSwingAnim),
+                Comment = "door swing, closed to open in three frames (0, 45, 90 deg)",
+                Parts = 3,
+                Frames =
+                [
+                    [At(0.05, 0, 0), At(1, 0, 0), At(-1, 0, 0, Z(180))],
+                    [At(0.283, -0.683, 0, Z(45)), At(1, 0, 0), At(-1, 0, 0, Z(180))],
+                    [At(0.965, -0.965, 0, Z(90)), At(1, 0, 0), At(-1, 0, 0, Z(180))],
+                ],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(NoDefaultCycleOpenAnim),
+                Comment = "the broken table's only animation: never reached",
+                Parts = 1,
+                Frames = [[At(0, 0, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(AnimatedStaticAnim),
+                Comment = "one part frame per frame for a 2-part Setup: frame 0 raises the pedestal 0.25 m, frame 1 0.5 m",
+                Parts = 1,
+                Frames = [[At(0, 0, 0.25)], [At(0, 0, 0.5)]],
+                PosFrames = [At(0, 0, 0), At(0.1, 0, 0)],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(DefaultAnimationAnim),
+                Comment = "two frames: the column 0.3 m along x, then 0.6 m",
+                Parts = 1,
+                Frames = [[At(0.3, 0, 0)], [At(0.6, 0, 0)]],
             },
         ],
         Landblocks =
@@ -321,6 +440,7 @@ public static class SampleSpecAuthor
 
     private static string Hex(uint id) => $"0x{id:X8}";
 
+    private static AnimDataSpec Anim(uint id, double framerate = 30) => new() { Anim = Hex(id), Framerate = framerate };
     /// <summary>
     /// Half of the hook types, with values a reader can get wrong: part indexes above 255, ReplaceObject ids in
     /// the short (offset up to 0x7FFF) and long packed forms, every direction. NoOp is left out: neither public

@@ -241,6 +241,8 @@ public static class ScaleSpecGenerator
             landblocks.Add(new LandblockSpec { Id = Hex(id), Objects = objects, Buildings = buildings });
         }
 
+        var (motionTables, animations) = ScaleMotions.Assign(setupSpecs[..doorCount], setupSpecs[doorCount..(doorCount + staticCount)],
+            setupSpecs[(doorCount + staticCount)..(doorCount + staticCount + creatureCount)], seed);
         // Interiors from a random of their own, so everything above is the same with or without them.
         var interiors = new Random(seed ^ 0x0CE11);
         var environments = Environments(interiors);
@@ -252,6 +254,8 @@ public static class ScaleSpecGenerator
             Provenance = $"forge scale --setups {setups} --gfxobjs {totalGfx} --seed {seed}: synthetic geometry; door Setup ids from the ACE world database door list",
             GfxObjs = gfxObjs,
             Setups = setupSpecs,
+            MotionTables = motionTables,
+            Animations = animations,
             Landblocks = landblocks,
             Environments = environments,
         };

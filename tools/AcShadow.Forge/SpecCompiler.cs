@@ -37,6 +37,8 @@ public static class SpecCompiler
         var portal = new Dictionary<uint, byte[]>();
         for (var i = 0; i < gfxBytes.Length; i++) portal[spec.GfxObjs[i].Id] = gfxBytes[i];
         foreach (var setup in spec.Setups) portal[setup.Id] = Serialize(setup.Write);
+        foreach (var table in spec.MotionTables) portal[table.Id] = Serialize(table.Write);
+        foreach (var animation in spec.Animations) portal[animation.Id] = Serialize(animation.Write);
         foreach (var environment in spec.Environments) portal[environment.Id] = Serialize(ToEnvironment(environment).Write);
         // Real dats carry an Iteration record beside the header; it gives the same figure as the directory.
         var iteration = Serialize(IterationRecord.Single(spec.Iteration).Write);

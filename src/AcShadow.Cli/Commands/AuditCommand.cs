@@ -28,24 +28,28 @@ public static class AuditCommand
         var sort = new Option<string?>("--sort") { Description = $"sort by a column ({string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))}); prefix - for descending", HelpName = "FIELD" };
         var chart = new Option<bool>("--chart") { Description = "also run the collision chart per Setup: which shape models are exact, and the cheapest (slow)" };
         var jobs = SelectionOptions.Jobs();
+        var pose = new PoseOptions();
+        var poseDiffers = new Option<bool>("--pose-differs") { Description = "only Setups whose retail pose differs from their placement pose (a part moved more than 1 mm or 0.1 deg)" };
         var command = new Command("audit", "Which Setups have BSP-bearing parts, and where a simpler shape model lies")
         {
             dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            format, outFile, onlyBsp, flagMismatch, maxCoverage, sort, chart, jobs,
+            format, outFile, onlyBsp, flagMismatch, maxCoverage, sort, chart, jobs, poseDiffers,
         };
+        foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
             var query = new AuditQuery(parse.GetValue(onlyBsp), parse.GetValue(flagMismatch),
-                ParseCoverage(parse.GetValue(maxCoverage)), ParseSort(parse.GetValue(sort)));
+                ParseCoverage(parse.GetValue(maxCoverage)), ParseSort(parse.GetValue(sort))) { PoseDiffers = parse.GetValue(poseDiffers) };
+            var poseOptions = pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail));
             var output = parse.GetValue(outFile);
             return Run(console, selection.Parse(parse, defaultToAll: true), parse.GetValue(dat), parse.GetValue(selection.CellDat),
-                query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)), parse.GetValue(chart));
+                query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)), parse.GetValue(chart), poseOptions);
         });
         return command;
     }
 
     private static int Run(CliConsole console, Core.Batch.BatchSelection selection, string? datPath, string? cellPath,
-        AuditQuery query, AuditFormat format, string? output, int jobs, bool chart)
+        AuditQuery query, AuditFormat format, string? output, int jobs, bool chart, Core.Shapes.ShapeBuildOptions pose)
     {
         if (output is not null) OutputPaths.RequireNamed(output);
         if (output is not null && Directory.Exists(output))
@@ -56,7 +60,7 @@ public static class AuditCommand
         AuditReport report;
         try
         {
-            report = AuditRunner.Run(dat.Portal, plan, query, jobs, chart ? new ChartOptions() : null, progress.Report);
+            report = AuditRunner.Run(dat.Portal, plan, query, jobs, chart ? new ChartOptions() : null, progress.Report, pose);
         }
         finally
         {

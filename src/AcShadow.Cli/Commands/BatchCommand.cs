@@ -9,6 +9,7 @@ using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Files;
@@ -33,6 +34,7 @@ public static class BatchCommand
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var incremental = new Option<bool>("--incremental") { Description = "skip Setups whose dat bytes (and their parts') did not change since the last --incremental run into DIR, and leave files whose content would not change untouched" };
         var format = FormatOption.Create();
+        var pose = new PoseOptions();
         var cells = new Option<bool>("--cells") { Description = "with --landblock: also write its indoor cells (the default)" };
         var noCells = new Option<bool>("--no-cells") { Description = "with --landblock: objects only, no indoor cells" };
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
@@ -40,12 +42,13 @@ public static class BatchCommand
             outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
             cells, noCells, policy, scale, jobs, quiet, incremental, format,
         };
+        foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse => Run(console,
             WithCells(selection.Parse(parse, defaultToAll: false), parse.GetValue(cells), parse.GetValue(noCells)),
             parse.GetValue(dat),
             parse.GetValue(selection.CellDat),
             parse.GetValue(outDir)!,
-            new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))),
+            pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale)))),
             SelectionOptions.ParseJobs(parse.GetValue(jobs)),
             parse.GetValue(quiet),
             parse.GetValue(incremental),
@@ -75,6 +78,9 @@ public static class BatchCommand
         var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
         {
             Formats = formats,
+            Pose = options.Pose,
+            DoorState = options.DoorState,
+            MotionTable = options.MotionTable,
         };
         RefuseForeignFiles(outDir, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
@@ -146,7 +152,7 @@ public static class BatchCommand
 
         var o = console.Out;
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, scale {options.EntityScale}): " +
+            $"batch {selection.Describe()} from {dat.Description} ({options.Policy.Name()}, {options.Pose.Name()} pose, scale {options.EntityScale}): " +
             $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s){(result.Cells > 0 ? $", {result.Cells} cell(s)" : "")}"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,

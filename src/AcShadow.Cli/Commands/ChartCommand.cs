@@ -34,10 +34,12 @@ public static class ChartCommand
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var jobs = new Option<string?>("--jobs") { Description = "objects charted side by side (default 1: times per query are then measured undisturbed)", HelpName = "N" };
+        var pose = new PoseOptions();
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
         {
             setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, outDir, radius, spacing, scale, quiet, jobs,
         };
+        foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
             var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).ToArray();
@@ -54,13 +56,15 @@ public static class ChartCommand
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
             var jobCount = parse.GetValue(jobs) is { } j ? SelectionOptions.ParseJobs(j) : 1;
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
-                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet), jobCount);
+                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet), jobCount,
+
+                pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail)));
         });
         return command;
     }
 
     private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir,
-        ChartOptions options, float scale, bool quiet, int jobs)
+        ChartOptions options, float scale, bool quiet, int jobs, Core.Shapes.ShapeBuildOptions pose)
     {
         var clock = Stopwatch.StartNew();
         OutputPaths.RequireNamed(outDir);
@@ -84,7 +88,7 @@ public static class ChartCommand
         AbandonedTemporaries.Remove(outDir);
         ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
 
-        var subjects = new ChartSubjects(dat.Portal);
+        var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
         // for by --setup has been read above, so it is decodable. The first few are warned about as they
         // come; the summary counts them all.

@@ -32,13 +32,15 @@ public static class DumpCommand
         var policy = CommonOptions.Policy();
         var scale = CommonOptions.Scale();
         var format = FormatOption.Create();
+        var pose = new PoseOptions();
         var command = new Command("dump", "Write one Setup's ShadowShape JSON and the BSP polygon dumps its shapes use (or one indoor cell's file)")
         {
             setup, cell, dat, cellDat, outDir, policy, scale, format,
         };
+        foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var options = new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale)));
+            var options = pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))));
             var formats = FormatOption.Parse(parse.GetValue(format));
             var (setupText, cellText) = (parse.GetValue(setup), parse.GetValue(cell));
             if ((setupText is null) == (cellText is null))
@@ -108,7 +110,7 @@ public static class DumpCommand
         var set = export.Set;
         console.Out.WriteLine(
             $"dump {JsonIds.Format(setupId)}: {set.Shapes.Count} shape(s) under {set.Policy.Name()} " +
-            $"(placement {set.Placement.Used}), {export.BspFiles.Count} BSP dump(s){(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, {export.Diagnostics.Count} diagnostic(s), " +
+            $"({PoseSummary.Describe(set)}), {export.BspFiles.Count} BSP dump(s){(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, {export.Diagnostics.Count} diagnostic(s), " +
             $"{bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
         return ExitCodes.Ok;
     }

@@ -46,7 +46,7 @@ public static class VerifyCommand
             throw new CliException(ExitCodes.Usage, $"the fixtures hold the scene of landblock {LandblockIds.Short(lb)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
 
         var plan = SelectionOptions.Plan(selection, dat);
-        var options = new ShapeBuildOptions(recorded.Policy, recorded.EntityScale);
+        var options = recorded.BuildOptions();
         var cellInfo = selection.Landblock is null ? null : dat.Cell?.Info;
         var inputs = recorded with { Dat = dat.Portal.Info, CellDat = cellInfo };
         var result = BatchRunner.Run(dat.Portal, options, plan, inputs, jobs, cancellation: console.Interrupted);

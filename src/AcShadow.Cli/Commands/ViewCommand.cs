@@ -9,11 +9,13 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
+using AcShadow.Core.Shapes;
 using AcShadow.Core.View;
 using AcShadow.Files;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Commands;
 
@@ -34,10 +36,12 @@ public static class ViewCommand
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DefaultOut);
         var scale = CommonOptions.Scale();
+        var pose = new PoseOptions();
         var command = new Command("view", "Write each Setup (or a landblock) as a glTF model (.glb, one layer per shape model) and a three-view drawing (.svg)")
         {
             setup, selection.Landblock, selection.CellDat, fixtures, chart, dat, outDir, scale,
         };
+        foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
             var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).Distinct().ToArray();
@@ -53,16 +57,19 @@ public static class ViewCommand
             if (folder is not null && parse.GetValue(scale) is not null)
                 throw new CliException(ExitCodes.Usage, "--fixtures views the files at the scale they were written with: drop --scale");
             OutputPaths.RequireNamed(parse.GetValue(outDir)!);
+            if (folder is not null && pose.All.Any(o => parse.GetResult(o) is not null))
+                throw new CliException(ExitCodes.Usage, "--fixtures views the files in the pose they were written with: drop --pose, --state and --motion-table");
             var failures = parse.GetValue(chart) is { } chartDir ? ReadFailures(chartDir) : [];
             var scenes = folder is not null
                 ? FromFixtures(console, folder, ids, landblock, failures)
-                : FromDat(console, parse.GetValue(dat), parse.GetValue(selection.CellDat), ids, landblock, ArgumentParsing.Scale(parse.GetValue(scale)), failures);
+                : FromDat(console, parse.GetValue(dat), parse.GetValue(selection.CellDat), ids, landblock,
+                    pose.Apply(parse, new ShapeBuildOptions(ShapePolicy.Retail, ArgumentParsing.Scale(parse.GetValue(scale)))), failures);
             return Write(console, parse.GetValue(outDir)!, scenes);
         });
         return command;
     }
 
-    private static IReadOnlyList<ViewScene> FromDat(CliConsole console, string? datPath, string? cellPath, uint[] ids, uint? landblock, float scale, IReadOnlyList<ChartFailure> failures)
+    private static IReadOnlyList<ViewScene> FromDat(CliConsole console, string? datPath, string? cellPath, uint[] ids, uint? landblock, ShapeBuildOptions pose, IReadOnlyList<ChartFailure> failures)
     {
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var scenes = new List<ViewScene>();
@@ -70,7 +77,7 @@ public static class ViewCommand
         {
             var setup = dat.Portal.ReadSetup(id)
                 ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(id)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
-            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, scale);
+            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, pose, dat.Portal);
             DiagnosticPrinter.Print(console.Error, JsonIds.Format(id), subject.Diagnostics);
             scenes.Add(ViewSceneBuilder.ForSetup(subject, failures));
         }
@@ -90,8 +97,8 @@ public static class ViewCommand
                 {
                     made = o.Kind switch
                     {
-                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, scale) : null,
-                        SceneObjectKind.GfxObj => dat.Portal.ReadGfxObj(o.Id) is { } g ? ViewSubjects.FromBareGfxObj(g, dat.Portal.ReadGfxObj, scale) : null,
+                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, pose, dat.Portal) : null,
+                        SceneObjectKind.GfxObj => dat.Portal.ReadGfxObj(o.Id) is { } g ? ViewSubjects.FromBareGfxObj(g, dat.Portal.ReadGfxObj, pose.EntityScale) : null,
                         _ => null,
                     };
                     if (made is null) console.Error.WriteLine($"warning: {JsonIds.Format(o.Id)}: placed by landblock {LandblockIds.Short(lb)} but not a Setup or GfxObj of {dat.Description}; not drawn");

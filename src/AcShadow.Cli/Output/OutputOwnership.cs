@@ -5,7 +5,7 @@ namespace AcShadow.Cli.Output;
 /// <summary>
 /// Whether an existing file is acshadow's to replace: its first line holding a letter must be the one
 /// acshadow writes there, digits aside. That is the format declaration of a JSON file
-/// (<c>"format": "acshadow.shadow/1",</c>; acdream's <c>"GfxObjId": …</c>), a CSV's header row, an SVG's
+/// (<c>"format": "acshadow.shadow/2",</c>; acdream's <c>"GfxObjId": …</c>), a CSV's header row, an SVG's
 /// root element; the digits may differ (versions, ids, sizes), nothing else. A user's own file of the
 /// same name differs there, and is left alone. A binary glTF file (<c>view</c>'s .glb) has no lines: it is
 /// ours when it starts with the glTF magic and its JSON names acshadow as its generator.

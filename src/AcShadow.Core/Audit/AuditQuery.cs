@@ -2,12 +2,16 @@ namespace AcShadow.Core.Audit;
 
 /// <summary>
 /// Which rows an audit shows and in what order. <see cref="Sort"/> is a column key, "-key" for
-/// descending; rows without a value sort last; ties go by Setup id.
+/// descending; rows without a value sort last; ties go by Setup id. <see cref="PoseDiffers"/> keeps only
+/// the Setups whose retail and placement poses differ.
 /// </summary>
 public sealed record AuditQuery(bool OnlyBsp = false, bool FlagMismatch = false, double? MaxCoverage = null, string Sort = "id")
 {
+    public bool PoseDiffers { get; init; }
+
     public bool Keeps(AuditRow row) =>
         (!OnlyBsp || row.PartsHavePhysicsBsp)
+        && (!PoseDiffers || row.PoseDiffers)
         && (!FlagMismatch || row.FlagMismatch)
         && (MaxCoverage is not { } max || row.Coverage is { } c && c <= max);
 

@@ -35,6 +35,15 @@ public sealed record AuditRow(
 {
     public bool FlagMismatch => FlagHasPhysicsBsp != PartsHavePhysicsBsp;
 
+    /// <summary>What the retail pose comes from: placement, default-animation or motion-table.</summary>
+    public string PoseSource { get; init; } = Fixtures.Shapes.PoseProvenance.PlacementSource;
+
+    /// <summary>The motion table the retail pose used, if any.</summary>
+    public uint? MotionTableId { get; init; }
+
+    /// <summary>The retail pose moves some part more than 1 mm or 0.1° from the placement pose.</summary>
+    public bool PoseDiffers { get; init; }
+
     /// <summary>
     /// The fraction of the BSP parts' footprint prism (footprint × their height range) that the fallback
     /// cylinder fills: coverage × height coverage. A thin, tall door's 14 cm × 20 cm "soda can" scores

@@ -1,5 +1,6 @@
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 
@@ -7,15 +8,19 @@ namespace AcShadow.Core.Audit;
 
 /// <summary>
 /// Audits one Setup: the shape counts come from <see cref="ShadowShapeBuilder"/> under both policies (the
-/// builder dump and batch use), the coverage from the retail BSP shapes' poses. Pure.
+/// builder dump and batch use) in the chosen pose, the coverage from the retail BSP shapes' poses, and
+/// whether the retail pose differs from the placement pose. Pure.
 /// </summary>
 public static class AuditRowBuilder
 {
-    public static AuditRow Build(Setup setup, Func<uint, GfxObj?> gfxObjs, float entityScale = 1f)
+    public static AuditRow Build(Setup setup, Func<uint, GfxObj?> gfxObjs, float entityScale = 1f, IMotionSource? motions = null, ShapeBuildOptions? pose = null)
     {
         var parts = setup.Parts.Select(id => TryRead(gfxObjs, id)).ToArray();
-        var retail = ShadowShapeBuilder.Build(setup, gfxObjs, new ShapeBuildOptions(ShapePolicy.Retail, entityScale));
-        var union = ShadowShapeBuilder.Build(setup, gfxObjs, new ShapeBuildOptions(ShapePolicy.Union, entityScale));
+        var options = (pose ?? new ShapeBuildOptions(ShapePolicy.Retail)) with { Policy = ShapePolicy.Retail, EntityScale = entityScale };
+        var retail = ShadowShapeBuilder.Build(setup, gfxObjs, options, motions);
+        var union = ShadowShapeBuilder.Build(setup, gfxObjs, options with { Policy = ShapePolicy.Union }, motions);
+        var retailPose = options.Pose == PosePolicy.Retail ? retail.Pose
+            : ShadowShapeBuilder.Build(setup, gfxObjs, options with { Pose = PosePolicy.Retail }, motions).Pose;
 
         var bspShapes = retail.Shapes.Where(s => s.CollisionType == CollisionType.Bsp && s.GfxObjId is not null).ToArray();
         var posed = new List<FootprintCoverage.PosedPart>();
@@ -55,7 +60,12 @@ public static class AuditRowBuilder
             heightCoverage,
             coverage?.Area,
             category,
-            retail.Diagnostics.Select(d => d.Code).Distinct().Order(StringComparer.Ordinal).ToArray());
+            retail.Diagnostics.Select(d => d.Code).Distinct().Order(StringComparer.Ordinal).ToArray())
+        {
+            PoseSource = retailPose.Source,
+            MotionTableId = retailPose.MotionTableId,
+            PoseDiffers = retailPose.DiffersFromPlacement,
+        };
     }
 
     /// <summary>An unreadable part counts as missing here; the builder reports it as a diagnostic.</summary>

@@ -13,7 +13,7 @@ namespace AcShadow.Core.Audit;
 public static class AuditRunner
 {
     public static AuditReport Run(IDatSource dat, BatchPlan plan, AuditQuery query, int jobs,
-        ChartOptions? chart = null, Action<BatchProgress>? progress = null)
+        ChartOptions? chart = null, Action<BatchProgress>? progress = null, Shapes.ShapeBuildOptions? pose = null)
     {
         var rows = new AuditRow?[plan.Setups.Count];
         var problems = new string?[plan.Setups.Count];
@@ -23,7 +23,7 @@ public static class AuditRunner
             {
                 Setup? setup = dat.ReadSetup(plan.Setups[i].Id);
                 if (setup is null) problems[i] = SkippedItem.NotInDat;
-                else rows[i] = AuditRowBuilder.Build(setup, dat.ReadGfxObj);
+                else rows[i] = AuditRowBuilder.Build(setup, dat.ReadGfxObj, 1f, dat, pose);
             }
             catch (DatFormatException e)
             {

@@ -1,4 +1,5 @@
 using System.Text.Json;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
@@ -55,6 +56,9 @@ public static class BatchIndexReader
             Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"))
         {
             Formats = Formats(inputs),
+            Pose = Pose(inputs),
+            DoorState = State(inputs),
+            MotionTable = MotionTable(inputs),
         };
         var files = Member(root, "files", "$");
         if (files.ValueKind != JsonValueKind.Array) throw new FormatException("$.files is not an array");
@@ -64,6 +68,27 @@ public static class BatchIndexReader
             return new IndexedFile(Str(f, "path", at), Str(f, "kind", at), Str(f, "id", at), Str(f, "sha256", at));
         }).ToArray();
         return new BatchIndex(result, list);
+    }
+
+    private static PosePolicy Pose(JsonElement inputs)
+    {
+        if (!inputs.TryGetProperty("pose", out var p)) return PosePolicy.Placement;
+        var text = p.ValueKind == JsonValueKind.String ? p.GetString()! : "";
+        return PoseNames.TryParse(text, out PosePolicy pose) ? pose : throw new FormatException($"$.inputs.pose \"{text}\" is not retail or placement");
+    }
+
+    private static DoorState State(JsonElement inputs)
+    {
+        if (!inputs.TryGetProperty("doorState", out var s)) return DoorState.Closed;
+        var text = s.ValueKind == JsonValueKind.String ? s.GetString()! : "";
+        return PoseNames.TryParse(text, out DoorState state) ? state : throw new FormatException($"$.inputs.doorState \"{text}\" is not closed or open");
+    }
+
+    private static uint? MotionTable(JsonElement inputs)
+    {
+        if (!inputs.TryGetProperty("motionTable", out var m) || m.ValueKind == JsonValueKind.Null) return null;
+        return m.ValueKind == JsonValueKind.String && JsonIds.TryParse(m.GetString(), out var id) ? id
+            : throw new FormatException("$.inputs.motionTable is not a hex id");
     }
 
     private static OutputFormats Formats(JsonElement inputs)

@@ -2,6 +2,7 @@ using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Json;
 
@@ -92,6 +93,9 @@ public static class BatchIndexWriter
             .Add("cellDat", inputs.CellDat is { } cell ? Dat(cell) : JsonNull.Value)
             .Add("policy", inputs.Policy.Name())
             .Add("entityScale", inputs.EntityScale)
+            .Add("pose", inputs.Pose.Name())
+            .Add("doorState", inputs.DoorState.Name())
+            .Add("motionTable", inputs.MotionTable is { } table ? JsonIds.Format(table) : null)
             .Add("selection", chosen);
         return inputs.Formats == OutputFormats.Canonical ? json : json.Add("formats", inputs.Formats.Name());
     }

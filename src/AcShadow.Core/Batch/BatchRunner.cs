@@ -126,7 +126,8 @@ public static class BatchRunner
         }
         if (export is null) return SetupOutcome.Failed(SkippedItem.NotInDat);
         FileEntry[] files = [.. emit(export.Shadow), .. export.BspEntries];
-        var parts = export.Setup.Parts.Distinct().Order().ToArray();
+        // What the files depend on besides the Setup: its parts, and the motion tables and animations its pose read.
+        var parts = export.Setup.Parts.Concat(export.MotionInputs).Distinct().Order().ToArray();
         var fingerprint = reuse?.Fingerprint(id, parts) ?? "";
         return new SetupOutcome(null, files, new IncrementalSetup(id, fingerprint, parts, export.Diagnostics.Count, files), false);
     }

@@ -19,7 +19,7 @@ public sealed record IncrementalState(string Tool, IReadOnlyList<IncrementalSetu
     /// to it) and the options the files depend on: a different tool or option reuses nothing.
     /// </summary>
     public static string ToolKey(ShapeBuildOptions options, OutputFormats formats) =>
-        $"{typeof(ExportEngine).Assembly.ManifestModule.ModuleVersionId:N}/{options.Policy.Name()}/{options.EntityScale.ToString("R", System.Globalization.CultureInfo.InvariantCulture)}/{formats.Name()}";
+        $"{typeof(ExportEngine).Assembly.ManifestModule.ModuleVersionId:N}/{options.Policy.Name()}/{options.EntityScale.ToString("R", System.Globalization.CultureInfo.InvariantCulture)}/{formats.Name()}/{Poses.PoseNames.Name(options.Pose)}/{Poses.PoseNames.Name(options.DoorState)}/{options.MotionTable:X8}";
 }
 
 /// <summary>One Setup's record in <see cref="IncrementalState"/>: every file written for it (its shadow file, its BSP dumps, in the chosen formats).</summary>

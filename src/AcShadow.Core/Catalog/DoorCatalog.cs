@@ -4,8 +4,14 @@ using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Catalog;
 
-/// <summary>One catalog row: a door Setup and how many door weenies use it.</summary>
-public sealed record DoorCatalogEntry(uint SetupId, int DoorWeenies);
+/// <summary>
+/// One catalog row: a door Setup, how many door weenies use it, and the MotionTables those weenies name,
+/// most used first (a live door is posed by its weenie's table, not only by the Setup's own).
+/// </summary>
+public sealed record DoorCatalogEntry(uint SetupId, int DoorWeenies, IReadOnlyList<uint> MotionTables)
+{
+    public DoorCatalogEntry(uint setupId, int doorWeenies) : this(setupId, doorWeenies, []) { }
+}
 
 /// <summary>
 /// The built-in door catalog: the Setup of every door weenie in the public ACE world database, kept as
@@ -23,6 +29,11 @@ public static class DoorCatalog
 
     public static IReadOnlyList<uint> SetupIds => Entries.Select(e => e.SetupId).ToArray();
 
+    private static readonly Lazy<Dictionary<uint, DoorCatalogEntry>> ById = new(() => Entries.ToDictionary(e => e.SetupId));
+
+    /// <summary>The row of a door Setup, or null when the Setup is not a door's.</summary>
+    public static DoorCatalogEntry? Find(uint setupId) => ById.Value.GetValueOrDefault(setupId);
+
     /// <summary>The catalog text as shipped, header comments included.</summary>
     public static string ReadResource()
     {
@@ -32,7 +43,10 @@ public static class DoorCatalog
         return reader.ReadToEnd();
     }
 
-    /// <summary>Tab-separated rows of setup_id and door_weenies; '#' lines and the column header are skipped.</summary>
+    /// <summary>
+    /// Tab-separated rows of setup_id, door_weenies and (optionally) motion_tables, a comma-separated id list;
+    /// '#' lines and the column header are skipped.
+    /// </summary>
     public static IReadOnlyList<DoorCatalogEntry> Parse(string text)
     {
         var entries = new List<DoorCatalogEntry>();
@@ -45,8 +59,12 @@ public static class DoorCatalog
             var columns = line.Split('\t');
             if (columns.Length < 2 || !JsonIds.TryParse(columns[0], out var id)
                 || !int.TryParse(columns[1], NumberStyles.None, CultureInfo.InvariantCulture, out var weenies))
-                throw new FormatException($"door catalog line {lineNumber}: '{line}' is not \"setup_id<TAB>door_weenies\"");
-            entries.Add(new DoorCatalogEntry(id, weenies));
+                throw new FormatException($"door catalog line {lineNumber}: '{line}' is not \"setup_id<TAB>door_weenies[<TAB>motion_tables]\"");
+            var tables = new List<uint>();
+            foreach (var tableText in columns.Length > 2 ? columns[2].Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries) : [])
+                tables.Add(JsonIds.TryParse(tableText, out var table) ? table
+                    : throw new FormatException($"door catalog line {lineNumber}: motion table '{tableText}' is not a hex id"));
+            entries.Add(new DoorCatalogEntry(id, weenies, tables));
         }
         return entries.OrderBy(e => e.SetupId).ToArray();
     }

@@ -1,6 +1,7 @@
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;
 
 namespace AcShadow.Core.Chart;
@@ -25,9 +26,15 @@ public sealed class ChartSubjects
     /// <summary>The portal dat the subjects come from.</summary>
     public IDatSource Dat => _dat;
 
-    public ChartSubjects(IDatSource dat, int cacheCapacity = DefaultCacheCapacity)
+    private readonly ShapeBuildOptions? _pose;
+
+    /// <param name="dat">The portal dat.</param>
+    /// <param name="pose">The pose, door state and motion table every subject's parts take (default: the retail pose).</param>
+    /// <param name="cacheCapacity">How many GfxObjs the caches hold before they are started afresh.</param>
+    public ChartSubjects(IDatSource dat, ShapeBuildOptions? pose = null, int cacheCapacity = DefaultCacheCapacity)
     {
         _dat = dat;
+        _pose = pose;
         CacheCapacity = cacheCapacity;
         Bsps = NewBspCache(_gfxObjs);
     }
@@ -78,13 +85,13 @@ public sealed class ChartSubjects
     public ChartSubject? ForBareGfxObj(uint gfxObjId, float entityScale = 1f)
     {
         var (gfxObjs, bsps) = Caches();
-        return gfxObjs(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), gfxObjs, bsps, entityScale) : null;
+        return gfxObjs(gfxObjId) is { } gfx ? new ChartSubject(Scenes.BareGfxObjShape.OnePartSetup(gfx), gfxObjs, bsps, entityScale) { Pose = _pose, Motions = _dat } : null;
     }
 
     /// <summary>The subject for a Setup, or null when the dat has no such Setup.</summary>
     public ChartSubject? For(uint setupId, float entityScale = 1f)
     {
         var (gfxObjs, bsps) = Caches();
-        return _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, gfxObjs, bsps, entityScale) : null;
+        return _dat.ReadSetup(setupId) is { } setup ? new ChartSubject(setup, gfxObjs, bsps, entityScale) { Pose = _pose, Motions = _dat } : null;
     }
 }

@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Poses;
 
 namespace AcShadow.Core.Dat;
 
@@ -9,7 +10,7 @@ namespace AcShadow.Core.Dat;
 /// <see cref="DatFormatException"/> reading "corrupt dat: {kind} 0x{id} in {file}: …" with its
 /// <see cref="DatFormatException.ObjectId"/> (an implementation catches its decoder's exceptions here).
 /// </summary>
-public interface IDatSource
+public interface IDatSource : IMotionSource
 {
     DatSourceInfo Info { get; }
     Setup? ReadSetup(uint id);

@@ -31,7 +31,8 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
     {
         var setup = Dat.ReadSetup(setupId);
         if (setup is null) return null;
-        var set = ShadowShapeBuilder.Build(setup, Dat.ReadGfxObj, Options);
+        var motions = new Poses.MotionReads(Dat);
+        var set = ShadowShapeBuilder.Build(setup, Dat.ReadGfxObj, Options, motions);
         var shadow = new OutputFile(ShadowFileFormat.PathFor(setupId), OutputKind.Shadow, setupId,
             ShadowFileWriter.Write(setup, set), set.Shapes.Count, 0);
         var diagnostics = new List<Diagnostic>(set.Diagnostics);
@@ -45,7 +46,7 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
             bspEntries.AddRange(dump.Entries);
             diagnostics.AddRange(dump.Diagnostics);
         }
-        return new SetupExport(setup, set, shadow, bspFiles, bspEntries, diagnostics);
+        return new SetupExport(setup, set, shadow, bspFiles, bspEntries, diagnostics) { MotionInputs = [.. motions.Ids] };
     }
 
     /// <summary>A GfxObj's BSP dump (no entry when it is absent or has no PhysicsBSP), made once and reused.</summary>

@@ -18,4 +18,7 @@ public sealed record SetupExport(
     IReadOnlyList<Diagnostic> Diagnostics)
 {
     public IEnumerable<OutputFile> Files => BspFiles.Prepend(Shadow);
+
+    /// <summary>The motion tables and animations the pose asked for (present or not), sorted.</summary>
+    public IReadOnlyList<uint> MotionInputs { get; init; } = [];
 }

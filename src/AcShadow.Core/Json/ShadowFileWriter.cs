@@ -5,7 +5,7 @@ using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Json;
 
-/// <summary>Writes a Setup's <see cref="ShadowShapeSet"/> as the canonical "acshadow.shadow/1" file (docs/formats.md).</summary>
+/// <summary>Writes a Setup's <see cref="ShadowShapeSet"/> as the canonical shadow file (docs/formats.md).</summary>
 public static class ShadowFileWriter
 {
     public static byte[] Write(Setup setup, ShadowShapeSet set) => CanonicalJsonWriter.WriteUtf8(ToJson(setup, set));
@@ -16,10 +16,26 @@ public static class ShadowFileWriter
         .Add("setupId", JsonIds.Format(set.SetupId))
         .Add("policy", set.Policy.Name())
         .Add("placement", new JsonObj().Add("requested", set.Placement.Requested).Add("used", set.Placement.Used))
+        .Add("pose", Pose(set.Pose))
         .Add("entityScale", set.EntityScale)
         .Add("setup", SetupFacts(setup, set))
         .Add("shapes", JsonArr.Of(set.Shapes, s => Shape(s, bspReference ?? ShadowFileFormat.BspReference)))
         .Add("diagnostics", JsonArr.Of(set.Diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
+
+    private static JsonObj Pose(PoseProvenance p) => new JsonObj()
+        .Add("policy", p.Policy)
+        .Add("source", p.Source)
+        .Add("motionTable", Id(p.MotionTableId))
+        .Add("motionTableFrom", p.MotionTableFrom)
+        .Add("style", Id(p.Style))
+        .Add("substate", Id(p.Substate))
+        .Add("animation", Id(p.AnimationId))
+        .Add("frame", p.Frame is { } frame ? JsonNum.Of(frame) : JsonNull.Value)
+        .Add("doorState", p.DoorState)
+        .Add("ethereal", p.Ethereal)
+        .Add("differsFromPlacement", p.DiffersFromPlacement);
+
+    private static string? Id(uint? id) => id is { } v ? JsonIds.Format(v) : null;
 
     private static JsonObj SetupFacts(Setup setup, ShadowShapeSet set) => new JsonObj()
         .Add("flags", (long)setup.Flags)
@@ -27,6 +43,8 @@ public static class ShadowFileWriter
         .Add("parts", JsonArr.Of(setup.Parts.Select(JsonIds.Format)))
         .Add("defaultScale", JsonArr.Of(setup.DefaultScale, JsonArr.Of))
         .Add("placements", JsonArr.Of(setup.PlacementFrames.Select(p => p.Name)))
+        .Add("defaultAnimation", JsonIds.Format(setup.DefaultAnimation))
+        .Add("defaultMotionTable", JsonIds.Format(setup.DefaultMotionTable))
         .Add("radius", setup.Radius)
         .Add("height", setup.Height)
         .Add("stepUpHeight", setup.StepUpHeight)

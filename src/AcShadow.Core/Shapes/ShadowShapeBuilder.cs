@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Poses;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
@@ -9,15 +10,22 @@ namespace AcShadow.Core.Shapes;
 /// <summary>
 /// Turns a Setup into the collision shapes an entity registers. Pure: the Setup and a GfxObj lookup in,
 /// a <see cref="ShadowShapeSet"/> out. Everything skipped becomes a <see cref="Diagnostic"/>.
+/// Parts are posed as <see cref="RetailPoseResolver"/> decides (motion tables and animations from
+/// <paramref name="motions"/>; without it, a Setup that names them gets a diagnostic and its placement pose).
 /// </summary>
 public static class ShadowShapeBuilder
 {
-    public static ShadowShapeSet Build(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options)
+    /// <summary>How far a part may move from its placement pose before the file says the two poses differ.</summary>
+    public const float MovedMetres = 0.001f, MovedDegrees = 0.1f;
+
+    public static ShadowShapeSet Build(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options, IMotionSource? motions = null)
     {
         var diagnostics = new List<Diagnostic>();
         var scale = options.EntityScale;
-        var placementFrame = PlacementResolver.Choose(setup, options.Policy);
+        var pose = RetailPoseResolver.Resolve(setup, options, motions, diagnostics);
+        var placementFrame = pose.Placement;
         var placement = PlacementResolver.Describe(placementFrame);
+        var provenance = pose.MotionFrames is null ? pose.Provenance : pose.Provenance with { DiffersFromPlacement = ReportMoves(setup, pose, diagnostics) };
         var parts = LookUpParts(setup, gfxObjs, diagnostics);
         // The dat stores exactly NumParts frames per placement; a source that does not is reported here,
         // and a part without a frame is reported where it is skipped (no-pose).
@@ -34,16 +42,47 @@ public static class ShadowShapeBuilder
 
         var shapes = options.Policy switch
         {
-            ShapePolicy.Retail => BuildRetail(setup, parts, partsHaveBsp, placementFrame, scale, diagnostics),
-            ShapePolicy.Union => BuildUnion(setup, parts, placementFrame, scale, diagnostics),
+            ShapePolicy.Retail => BuildRetail(setup, parts, partsHaveBsp, pose, scale, diagnostics),
+            ShapePolicy.Union => BuildUnion(setup, parts, pose, scale, diagnostics),
             _ => throw new ArgumentOutOfRangeException(nameof(options)),
         };
         if (shapes.Count == 0)
             diagnostics.Add(new(DiagnosticCodes.NoShapes, "no collision shapes: nothing of this object collides"));
         foreach (var shape in shapes.Where(s => !IsFinite(s)))
             diagnostics.Add(new(DiagnosticCodes.NonFinite, $"{Describe(shape)}: non-finite position, rotation, scale or radius (NaN or infinity in the dat)"));
-        return new ShadowShapeSet(setup.Id, options.Policy, placement, scale, partsHaveBsp, shapes, diagnostics);
+        return new ShadowShapeSet(setup.Id, options.Policy, placement, scale, partsHaveBsp, shapes, diagnostics) { Pose = provenance };
     }
+
+    /// <summary>
+    /// Says, in one diagnostic, which parts the motion pose moves more than 1 mm or 0.1° from where the
+    /// placement pose puts them; true when any does.
+    /// </summary>
+    private static bool ReportMoves(Setup setup, ResolvedPose pose, List<Diagnostic> diagnostics)
+    {
+        var moves = new List<string>();
+        var count = Math.Min(setup.Parts.Count, pose.MotionFrames!.Count);
+        for (var i = 0; i < count; i++)
+        {
+            var placed = PlacementPose(pose.Placement, setup.Parts.Count, i);
+            if (placed is not { } p) continue;
+            var m = pose.MotionFrames[i];
+            var metres = Vector3.Distance(p.Origin, m.Origin);
+            var dot = Math.Abs((double)Quaternion.Dot(Quaternion.Normalize(p.Orientation), Quaternion.Normalize(m.Orientation)));
+            var degrees = (float)(2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI);
+            if (metres > MovedMetres || degrees > MovedDegrees)
+                moves.Add(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"part {i} by {metres:0.###} m and {degrees:0.#} deg"));
+        }
+        if (moves.Count == 0) return false;
+        var p0 = pose.Provenance;
+        var by = p0.Source == PoseProvenance.DefaultAnimationSource ? "the DefaultAnimation" : $"MotionTable 0x{p0.MotionTableId:X8}";
+        diagnostics.Add(new(PoseDiagnosticCodes.PoseMoved,
+            $"the retail pose ({by}, Animation 0x{p0.AnimationId:X8} frame {p0.Frame}) moves {string.Join(", ", moves)} from placement {pose.Placement?.Name ?? PlacementResolution.NoneName}; --pose placement gives the placement pose"));
+        return true;
+    }
+
+    /// <summary>Where the placement pose puts part <paramref name="index"/>, or null when it gives it no pose.</summary>
+    private static Frame? PlacementPose(PlacementFrame? placement, int partCount, int index) =>
+        placement is { } frame ? (index < frame.Frames.Count ? frame.Frames[index] : null) : partCount == 1 ? Frame.Identity : null;
 
     private static GfxObj?[] LookUpParts(Setup setup, Func<uint, GfxObj?> gfxObjs, List<Diagnostic> diagnostics)
     {
@@ -69,7 +108,7 @@ public static class ShadowShapeBuilder
     /// CPhysicsObj::FindObjCollisions picks one family: parts' BSPs when any part has one, else
     /// CylSpheres, else Spheres.
     /// </summary>
-    private static List<ShadowShape> BuildRetail(Setup setup, GfxObj?[] parts, bool partsHaveBsp, PlacementFrame? placement, float scale, List<Diagnostic> diagnostics)
+    private static List<ShadowShape> BuildRetail(Setup setup, GfxObj?[] parts, bool partsHaveBsp, ResolvedPose pose, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();
         if (partsHaveBsp)
@@ -81,7 +120,7 @@ public static class ShadowShapeBuilder
             {
                 var gfx = parts[i];
                 if (gfx?.HasPhysics != true) continue;
-                if (!TryRetailPose(placement, parts.Length, i, out var pose, diagnostics, setup.Parts[i])) continue;
+                if (!TryRetailPose(pose, parts.Length, i, out var partPose, diagnostics, setup.Parts[i])) continue;
                 var partScale = scale;
                 if (useDefaultScale)
                 {
@@ -91,7 +130,7 @@ public static class ShadowShapeBuilder
                     if (s.X != s.Z || s.Y != s.Z)
                         diagnostics.Add(new(DiagnosticCodes.NonUniformScale, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z"));
                 }
-                shapes.Add(BspShape(i, gfx, pose, scale, partScale));
+                shapes.Add(BspShape(i, gfx, partPose, scale, partScale));
             }
             return shapes;
         }
@@ -112,12 +151,14 @@ public static class ShadowShapeBuilder
     }
 
     /// <summary>
-    /// CPartArray::UpdateParts poses min(NumParts, frames) parts; with no frame a one-part object sits at
-    /// the entity origin and the parts of a multi-part object have no meaningful pose.
+    /// CPartArray::UpdateParts poses min(NumParts, frames) parts: by the current animation frame when there
+    /// is one, else by the placement frame; with neither, a one-part object sits at the entity origin and the
+    /// parts of a multi-part object have no meaningful pose.
     /// </summary>
-    private static bool TryRetailPose(PlacementFrame? placement, int partCount, int index, out Frame pose, List<Diagnostic> diagnostics, uint gfxId)
+    private static bool TryRetailPose(ResolvedPose resolved, int partCount, int index, out Frame pose, List<Diagnostic> diagnostics, uint gfxId)
     {
-        if (placement is { } frame)
+        if (resolved.MotionFrames is { } motion && index < motion.Count) { pose = motion[index]; return true; }
+        if (resolved.Placement is { } frame)
         {
             if (index < frame.Frames.Count) { pose = frame.Frames[index]; return true; }
             diagnostics.Add(new(DiagnosticCodes.NoPose, $"part {index} (GfxObj 0x{gfxId:X8}): placement {frame.Name} has only {frame.Frames.Count} frame(s); the part gets no pose and is skipped"));
@@ -131,7 +172,7 @@ public static class ShadowShapeBuilder
     }
 
     /// <summary>The design's union builder, reproduced exactly so its divergences can be measured.</summary>
-    private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, PlacementFrame? placement, float scale, List<Diagnostic> diagnostics)
+    private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, ResolvedPose resolved, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();
         for (var i = 0; i < setup.CylSpheres.Count; i++)
@@ -154,8 +195,9 @@ public static class ShadowShapeBuilder
         {
             var gfx = parts[i];
             if (gfx?.HasPhysics != true) continue;
-            var frame = placement;
-            var pose = frame is not null && i < frame.Frames.Count ? frame.Frames[i] : Frame.Identity;
+            var frame = resolved.Placement;
+            var pose = resolved.MotionFrames is { } motion && i < motion.Count ? motion[i]
+                : frame is not null && i < frame.Frames.Count ? frame.Frames[i] : Frame.Identity;
             shapes.Add(BspShape(i, gfx, pose, scale, scale));
         }
         return shapes;

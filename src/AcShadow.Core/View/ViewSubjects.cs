@@ -4,6 +4,7 @@ using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
@@ -20,10 +21,13 @@ namespace AcShadow.Core.View;
 /// </summary>
 public static class ViewSubjects
 {
-    public static ViewSubject FromDat(Setup setup, Func<uint, GfxObj?> gfxObjs, float entityScale)
+    /// <param name="pose">The pose, door state and motion table the parts take, and the entity scale (its policy is ignored: both are drawn).</param>
+    /// <param name="motions">Where motion tables and animations come from (the dat), for the retail pose.</param>
+    public static ViewSubject FromDat(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions pose, IMotionSource? motions)
     {
-        var retail = ShadowShapeBuilder.Build(setup, gfxObjs, new ShapeBuildOptions(ShapePolicy.Retail, entityScale));
-        var union = ShadowShapeBuilder.Build(setup, gfxObjs, new ShapeBuildOptions(ShapePolicy.Union, entityScale));
+        var entityScale = pose.EntityScale;
+        var retail = ShadowShapeBuilder.Build(setup, gfxObjs, pose with { Policy = ShapePolicy.Retail }, motions);
+        var union = ShadowShapeBuilder.Build(setup, gfxObjs, pose with { Policy = ShapePolicy.Union }, motions);
         var primitives = SetupPrimitives.Of(setup);
         return new ViewSubject(setup.Id, "Setup",
             [

@@ -7,7 +7,7 @@ using static AcShadow.Fixtures.Json.BspFileReader;
 namespace AcShadow.Fixtures.Json;
 
 /// <summary>
-/// Reads the shapes of an "acshadow.shadow/1" file back, so a consumer of the fixtures (or the collision
+/// Reads the shapes and the pose of a shadow file back, so a consumer of the fixtures (or the collision
 /// reference) works from exactly what the tool wrote. The Setup facts block is informational and not
 /// read back.
 /// </summary>
@@ -26,8 +26,25 @@ public static class ShadowFileReader
         var setup = Prop(root, "setup");
         return new ShadowShapeSet(setupId, policy,
             new PlacementResolution(Str(placement, "requested"), Str(placement, "used")),
-            Float(root, "entityScale"), Prop(setup, "hasPhysicsBsp").GetBoolean(), shapes, diagnostics);
+            Float(root, "entityScale"), Prop(setup, "hasPhysicsBsp").GetBoolean(), shapes, diagnostics) { Pose = ReadPose(Prop(root, "pose")) };
     }
+
+    private static PoseProvenance ReadPose(JsonElement p)
+    {
+        var source = Str(p, "source");
+        if (source is not (PoseProvenance.PlacementSource or PoseProvenance.DefaultAnimationSource or PoseProvenance.MotionTableSource))
+            throw new FormatException($"unknown pose source \"{source}\"");
+        var frame = Prop(p, "frame");
+        return new PoseProvenance(Str(p, "policy"), source, OptionalId(p, "motionTable"), OptionalStr(p, "motionTableFrom"),
+            OptionalId(p, "style"), OptionalId(p, "substate"), OptionalId(p, "animation"),
+            frame.ValueKind == JsonValueKind.Null ? null : frame.GetInt32(), OptionalStr(p, "doorState"),
+            Prop(p, "ethereal").GetBoolean(), Prop(p, "differsFromPlacement").GetBoolean());
+    }
+
+    private static string? OptionalStr(JsonElement e, string name) => Prop(e, name) is { ValueKind: JsonValueKind.Null } ? null : Str(e, name);
+
+    private static uint? OptionalId(JsonElement e, string name) => OptionalStr(e, name) is not { } text ? null
+        : JsonIds.TryParse(text, out var id) ? id : throw new FormatException($"pose {name} is not a hex id");
 
     internal static ShadowShape ReadShape(JsonElement s)
     {

@@ -1,6 +1,9 @@
 namespace AcShadow.Fixtures.Shapes;
 
-/// <summary>Everything the builder decided for one Setup: the shapes, the placement used, and what it could not resolve.</summary>
+/// <summary>
+/// Everything the builder decided for one Setup: the shapes, the placement frame, the pose the parts are
+/// in (<see cref="Pose"/>), and what it could not resolve.
+/// </summary>
 public sealed record ShadowShapeSet(
     uint SetupId,
     ShapePolicy Policy,
@@ -8,4 +11,7 @@ public sealed record ShadowShapeSet(
     float EntityScale,
     bool PartsHavePhysicsBsp,
     IReadOnlyList<ShadowShape> Shapes,
-    IReadOnlyList<Diagnostic> Diagnostics);
+    IReadOnlyList<Diagnostic> Diagnostics)
+{
+    public PoseProvenance Pose { get; init; } = PoseProvenance.Placement("placement");
+}

@@ -54,8 +54,8 @@ public class AuditTests
     public void Summary_counts_match_the_sample()
     {
         var s = SampleReport().Summary;
-        Assert.Equal(12, s["setups"]);
-        Assert.Equal(9, s["bsp"]);
+        Assert.Equal(14, s["setups"]);
+        Assert.Equal(11, s["bsp"]);
         Assert.Equal(1, s["cylinders"]);
         Assert.Equal(2, s["spheres"]);
         Assert.Equal(0, s["none"]);
@@ -117,8 +117,8 @@ public class AuditTests
     public void Filters_and_sorting()
     {
         var onlyBsp = SampleReport(new AuditQuery(OnlyBsp: true));
-        Assert.Equal(9, onlyBsp.Rows.Count);
-        Assert.Equal(12, onlyBsp.Audited);
+        Assert.Equal(11, onlyBsp.Rows.Count);
+        Assert.Equal(14, onlyBsp.Audited);
         Assert.Equal([0x02003000u, 0x02003100u], SampleReport(new AuditQuery(FlagMismatch: true)).Rows.Select(r => r.SetupId));
         var low = SampleReport(new AuditQuery(MaxCoverage: 0.2));
         Assert.All(low.Rows, r => Assert.True(r.Coverage <= 0.2));
@@ -141,7 +141,7 @@ public class AuditTests
         Assert.Equal(0, csv.ExitCode);
         var lines = File.ReadAllLines(csvPath);
         Assert.Equal(string.Join(',', AuditColumns.All.Select(c => c.Key)), lines[0]);
-        Assert.Equal(13, lines.Length);
+        Assert.Equal(15, lines.Length);
         Assert.StartsWith("0x0200024F,bsp,1,1,0,", lines[1]);
         Assert.Contains("wrote", csv.Out);
         Assert.Contains("family bsp", csv.Out);
@@ -151,9 +151,9 @@ public class AuditTests
         using var doc = JsonDocument.Parse(json.Out);
         Assert.Equal("acshadow.audit/1", doc.RootElement.GetProperty("format").GetString());
         var rows = doc.RootElement.GetProperty("rows").EnumerateArray().ToArray();
-        Assert.Equal(9, rows.Length);
+        Assert.Equal(11, rows.Length);
         Assert.Equal(AuditColumns.All.Select(c => c.Key), rows[0].EnumerateObject().Select(p => p.Name));
-        Assert.Equal(9, doc.RootElement.GetProperty("summary").GetProperty("bsp").GetInt32());
+        Assert.Equal(11, doc.RootElement.GetProperty("summary").GetProperty("bsp").GetInt32());
 
         var md = CliRun.Of("audit", "--format", "md", "--setups", WriteIds(dir, "0x020019FF\n0x0200ABCD\n"));
         Assert.Equal(0, md.ExitCode);
@@ -161,7 +161,7 @@ public class AuditTests
         Assert.Contains("- skipped, not in the dat: 0x0200ABCD", md.Out);
 
         var csvOut = CliRun.Of("audit", "--format", "csv");
-        Assert.Equal(13, csvOut.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
+        Assert.Equal(15, csvOut.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
         Assert.Contains("Summary", csvOut.Error); // the summary stays out of the CSV
     }
 

@@ -47,7 +47,7 @@ public class ChartOutputTests
     {
         var timer = new TableTimer(new Dictionary<string, double>
         {
-            ["retail"] = 100, ["union"] = unionNs, ["fallback-cylinder"] = 5, ["spheres"] = 5, ["part-spheres"] = 10, ["part-boxes"] = 8, ["part-hulls"] = 9,
+            ["retail"] = 100, ["union"] = unionNs, ["fallback-cylinder"] = 5, ["spheres"] = 5, ["part-spheres"] = 10, ["part-boxes"] = 8, ["part-hulls"] = 9, ["placement-pose"] = 100,
         });
         // The L-shaped block without placement frames: union poses it as retail does, and nothing cheaper is exact.
         var report = ChartRunner.Run([SampleChart.Subjects.Value.For(0x02003300)!], new ChartOptions(), timer: timer);

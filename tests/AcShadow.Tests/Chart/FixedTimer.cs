@@ -8,7 +8,7 @@ public sealed class FixedTimer : IQueryTimer
 {
     public static readonly IReadOnlyDictionary<string, double> Default = new Dictionary<string, double>
     {
-        ["retail"] = 400, ["union"] = 420, ["fallback-cylinder"] = 40, ["spheres"] = 45, ["part-spheres"] = 60,
+        ["retail"] = 400, ["union"] = 420, ["fallback-cylinder"] = 40, ["spheres"] = 45, ["part-spheres"] = 60, ["placement-pose"] = 410,
     };
 
     public TimingStats Measure(string modelName, PreparedModel model, IReadOnlyList<Probe> probes, ChartOptions options)

@@ -17,7 +17,7 @@ public class ShapeModelTests
     [Fact]
     public void Models_are_registered_in_chart_order_with_unique_names()
     {
-        Assert.Equal(["retail", "union", "fallback-cylinder", "spheres", "part-spheres", "part-boxes", "part-hulls"], ShapeModels.All.Select(m => m.Name));
+        Assert.Equal(["retail", "union", "fallback-cylinder", "spheres", "part-spheres", "part-boxes", "part-hulls", "placement-pose"], ShapeModels.All.Select(m => m.Name));
         Assert.Same(ShapeModels.All[2], ShapeModels.Find("Fallback-Cylinder"));
     }
 

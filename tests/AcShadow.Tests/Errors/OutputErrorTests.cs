@@ -152,14 +152,14 @@ public class OutputErrorTests
         using var dir = new TempDir();
         Assert.Equal(0, CliRun.Of("dump", "--setup", "0x020019FF", "--format", "both", "--out", dir.Path).ExitCode);
         var shadow = Path.Combine(dir.Path, "setups", "0x020019FF.shadow.json");
-        File.WriteAllText(shadow, File.ReadAllText(shadow).Replace("acshadow.shadow/1", "acshadow.shadow/0"));
+        File.WriteAllText(shadow, File.ReadAllText(shadow).Replace("acshadow.shadow/2", "acshadow.shadow/0"));
         var acdream = Path.Combine(dir.Path, "gfxobjs", "0x010044B5.gfxobj.json");
         File.WriteAllText(acdream, "{\n  \"GfxObjId\": 1,\n}\n");
 
         var run = CliRun.Of("dump", "--setup", "0x020019FF", "--format", "both", "--out", dir.Path);
 
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains("acshadow.shadow/1", File.ReadAllText(shadow));
+        Assert.Contains("acshadow.shadow/2", File.ReadAllText(shadow));
         Assert.Contains("\"GfxObjId\": 16794805", File.ReadAllText(acdream));
     }
 
@@ -196,7 +196,7 @@ public class OutputErrorTests
 
         Assert.Equal(0, run.ExitCode);
         Assert.False(File.Exists(leftover));
-        Assert.StartsWith("{\n  \"format\": \"acshadow.shadow/1\"", File.ReadAllText(shadow));
+        Assert.StartsWith("{\n  \"format\": \"acshadow.shadow/2\"", File.ReadAllText(shadow));
         Assert.EndsWith("}\n", File.ReadAllText(shadow));
     }
 }

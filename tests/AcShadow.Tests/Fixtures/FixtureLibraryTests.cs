@@ -18,7 +18,7 @@ public class FixtureLibraryTests
         var onDisk = Directory.GetFiles(Committed.Folder, "*.json", SearchOption.AllDirectories)
             .Select(f => Path.GetRelativePath(Committed.Folder, f).Replace('\\', '/')).Where(p => p != "index.json").Order().ToArray();
         Assert.Equal(onDisk, index.Files.Select(f => f.Path).Order().ToArray());
-        Assert.Equal(12, index.OfKind("shadow").Count());
+        Assert.Equal(14, index.OfKind("shadow").Count());
     }
 
     [Fact]
@@ -50,8 +50,8 @@ public class FixtureLibraryTests
     }
 
     [Theory]
-    [InlineData("setups/0x020019FF.shadow.json", "acshadow.shadow/2", "a version this library does not read (it reads \"acshadow.shadow/1\")")]
-    [InlineData("setups/0x020019FF.shadow.json", "acshadow.bsp/1", "is not \"acshadow.shadow/1\"; wrong kind of file?")]
+    [InlineData("setups/0x020019FF.shadow.json", "acshadow.shadow/1", "a version this library does not read (it reads \"acshadow.shadow/2\")")]
+    [InlineData("setups/0x020019FF.shadow.json", "acshadow.bsp/1", "is not \"acshadow.shadow/2\"; wrong kind of file?")]
     [InlineData("gfxobjs/0x010044B5.bsp.json", "acshadow.bsp/9", "a version this library does not read (it reads \"acshadow.bsp/1\")")]
     public void An_unknown_format_version_is_refused_by_name(string file, string format, string expected)
     {

@@ -126,7 +126,7 @@ public sealed class ForgeRoundTripTests
     [Fact]
     public void The_iteration_record_reads_back_in_both_dats()
     {
-        foreach (var (bytes, objects) in new[] { (Dats.Portal, Spec.GfxObjs.Count + Spec.Setups.Count + Spec.Environments.Count), (Dats.Cell!, Spec.Landblocks.Count + Spec.Cells.Count) })
+        foreach (var (bytes, objects) in new[] { (Dats.Portal, Spec.GfxObjs.Count + Spec.Setups.Count + Spec.MotionTables.Count + Spec.Animations.Count + Spec.Environments.Count), (Dats.Cell!, Spec.Landblocks.Count + Spec.Cells.Count) })
         {
             using var dat = Open(bytes);
             var record = IterationRecord.Read(new DatBinaryReader(dat.Archive.ReadObjectBytes(IterationRecord.Id)!));

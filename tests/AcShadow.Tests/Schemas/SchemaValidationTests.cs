@@ -116,7 +116,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     }
 
     [Theory]
-    [InlineData("dump/setups/0x020019FF.shadow.json", "\"format\": \"acshadow.shadow/1\"", "\"format\": \"acshadow.shadow/2\"", "/format: const:")]
+    [InlineData("dump/setups/0x020019FF.shadow.json", "\"format\": \"acshadow.shadow/2\"", "\"format\": \"acshadow.shadow/1\"", "/format: const:")]
     [InlineData("dump/setups/0x020019FF.shadow.json", "\"collisionType\": \"bsp\"", "\"collisionType\": \"box\"", "/shapes/0/collisionType: enum:")]
     [InlineData("dump/gfxobjs/0x010044B5.bsp.json", "\"gfxObjId\": \"0x010044B5\"", "\"gfxObjId\": \"0x10044B5\"", "/gfxObjId: pattern:")]
     [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"NumPoints\": 4", "\"NumPoints\": \"4\"", "/NumPoints: type:")]

@@ -11,12 +11,12 @@ public class SampleSetupShapeTests
     // setup, policy, expected collision types in order, placement used, diagnostic codes that must appear
     public static TheoryData<uint, string, string, string, string> Cases => new()
     {
-        { 0x020019FF, "retail", "bsp bsp bsp", "Resting", "" },
-        { 0x020019FF, "union", "cylinder bsp bsp bsp", "Resting", "" },
-        { 0x0200024F, "retail", "bsp", "Resting", "" },
-        { 0x0200024F, "union", "cylinder bsp", "Resting", "" },
-        { 0x02000281, "retail", "bsp bsp bsp bsp", "Resting", "" },
-        { 0x02000281, "union", "cylinder bsp bsp bsp bsp", "Resting", "" },
+        { 0x020019FF, "retail", "bsp bsp bsp", "Resting", "pose-moved" },
+        { 0x020019FF, "union", "cylinder bsp bsp bsp", "Resting", "pose-moved" },
+        { 0x0200024F, "retail", "bsp", "Resting", "no-default-state door-motion" },
+        { 0x0200024F, "union", "cylinder bsp", "Resting", "no-default-state door-motion" },
+        { 0x02000281, "retail", "bsp bsp bsp bsp", "Resting", "no-default-state door-motion" },
+        { 0x02000281, "union", "cylinder bsp bsp bsp bsp", "Resting", "no-default-state door-motion" },
         { 0x02001000, "retail", "cylinder cylinder", "Resting", "" },
         { 0x02001000, "union", "cylinder cylinder", "Resting", "" },
         { 0x02002000, "retail", "sphere", "Default", "" },
@@ -31,6 +31,10 @@ public class SampleSetupShapeTests
         { 0x02003300, "union", "bsp", "None", "" },
         { 0x02003400, "retail", "bsp", "Resting", "missing-gfxobj" },
         { 0x02003400, "union", "bsp", "Resting", "missing-gfxobj" },
+        { 0x02003500, "retail", "bsp bsp", "Resting", "animation-parts pose-moved" },
+        { 0x02003500, "union", "bsp bsp", "Resting", "animation-parts pose-moved" },
+        { 0x02003600, "retail", "bsp", "Resting", "pose-moved" },
+        { 0x02003600, "union", "bsp", "Resting", "pose-moved" },
         { 0x02005000, "retail", "bsp", "Default", "" },
         { 0x02005000, "union", "bsp", "Default", "" },
         { 0x02006000, "retail", "bsp", "Resting", "" },
@@ -44,7 +48,7 @@ public class SampleSetupShapeTests
         using var dat = SampleDat.OpenPortal();
         ShapePolicies.TryParse(policy, out var p);
         var setup = dat.ReadSetup(setupId)!;
-        var set = ShadowShapeBuilder.Build(setup, dat.ReadGfxObj, new ShapeBuildOptions(p));
+        var set = ShadowShapeBuilder.Build(setup, dat.ReadGfxObj, new ShapeBuildOptions(p), dat);
         Assert.Equal(types, string.Join(' ', set.Shapes.Select(s => s.CollisionType.ToString().ToLowerInvariant())));
         Assert.Equal(placement, set.Placement.Used);
         foreach (var code in codes.Split(' ', StringSplitOptions.RemoveEmptyEntries))

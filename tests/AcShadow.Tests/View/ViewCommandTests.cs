@@ -205,7 +205,7 @@ public sealed class ViewCommandTests
         var png = PngImage.Read(File.ReadAllBytes(pngPath));
 
         using var dat = SampleDat.OpenPortal();
-        var scene = ViewSceneBuilder.ForSetup(ViewSubjects.FromDat(dat.ReadSetup(Door)!, dat.ReadGfxObj, 1f), []);
+        var scene = ViewSceneBuilder.ForSetup(ViewSubjects.FromDat(dat.ReadSetup(Door)!, dat.ReadGfxObj, new ShapeBuildOptions(ShapePolicy.Retail), dat), []);
         Assert.Equal(ThreeViewSvg.Write(scene), File.ReadAllText(svgPath));
         var layout = ThreeViewSvg.Layout(scene);
         Assert.Equal((int)Math.Ceiling(layout.Width), png.Width);

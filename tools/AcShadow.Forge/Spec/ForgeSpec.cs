@@ -20,6 +20,8 @@ public sealed record ForgeSpec
     public string? Comment { get; set; }
     public IReadOnlyList<GfxObjSpec> GfxObjs { get; set; } = [];
     public IReadOnlyList<SetupSpec> Setups { get; set; } = [];
+    public IReadOnlyList<MotionTableSpec> MotionTables { get; set; } = [];
+    public IReadOnlyList<AnimationSpec> Animations { get; set; } = [];
     public IReadOnlyList<LandblockSpec> Landblocks { get; set; } = [];
     /// <summary>Environments (portal dat, 0x0D…): the cell shapes a landblock's cells use.</summary>
     public IReadOnlyList<EnvironmentSpec> Environments { get; set; } = [];
@@ -68,8 +70,74 @@ public sealed record SetupSpec
     public IReadOnlyList<string> Flags { get; set; } = [];
     /// <summary>Part ids deliberately left out of the dat.</summary>
     public IReadOnlyList<string> MissingParts { get; set; } = [];
+    /// <summary>An animation of this spec the object plays when no motion table state replaces it.</summary>
+    public string? DefaultAnimation { get; set; }
+    /// <summary>A motion table of this spec the object starts with.</summary>
+    public string? DefaultMotionTable { get; set; }
     /// <summary>Placement name (one of <see cref="Placements"/>) → the animation hooks its frame carries.</summary>
     public IReadOnlyDictionary<string, IReadOnlyList<HookSpec>?> Hooks { get; set; } = new Dictionary<string, IReadOnlyList<HookSpec>?>();
+}
+
+/// <summary>A MotionTable: its default style, each style's default substate, and what each (style, motion) plays.</summary>
+public sealed record MotionTableSpec
+{
+    public string? Id { get; set; }
+    public string? Comment { get; set; }
+    /// <summary>A style (stance) command, e.g. "0x8000003D" (NonCombat).</summary>
+    public string? DefaultStyle { get; set; }
+    public IReadOnlyList<StyleDefaultSpec> StyleDefaults { get; set; } = [];
+    public IReadOnlyList<MotionSpec> Cycles { get; set; } = [];
+    public IReadOnlyList<MotionSpec> Modifiers { get; set; } = [];
+    public IReadOnlyList<LinkSpec> Links { get; set; } = [];
+    /// <summary>Animation ids this table names that are deliberately left out of the dat.</summary>
+    public IReadOnlyList<string> MissingAnimations { get; set; } = [];
+}
+
+public sealed record StyleDefaultSpec
+{
+    public string? Style { get; set; }
+    public string? Substate { get; set; }
+}
+
+/// <summary>One motion: stored under the key (style &lt;&lt; 16) | (motion &amp; 0xFFFFFF).</summary>
+public sealed record MotionSpec
+{
+    public string? Style { get; set; }
+    public string? Motion { get; set; }
+    public int Bitfield { get; set; }
+    public IReadOnlyList<AnimDataSpec> Anims { get; set; } = [];
+    public double[]? Velocity { get; set; }
+    public double[]? Omega { get; set; }
+}
+
+/// <summary>A transition: from (style, substate) to a motion, stored under the key of (style, from) and the full to-motion.</summary>
+public sealed record LinkSpec
+{
+    public string? Style { get; set; }
+    public string? From { get; set; }
+    public string? To { get; set; }
+    public int Bitfield { get; set; }
+    public IReadOnlyList<AnimDataSpec> Anims { get; set; } = [];
+}
+
+public sealed record AnimDataSpec
+{
+    public string? Anim { get; set; }
+    public int LowFrame { get; set; }
+    /// <summary>−1: to the last frame.</summary>
+    public int HighFrame { get; set; } = -1;
+    public double Framerate { get; set; } = 30;
+}
+
+/// <summary>An Animation: per frame, one frame per animated part (<see cref="Parts"/> of them).</summary>
+public sealed record AnimationSpec
+{
+    public string? Id { get; set; }
+    public string? Comment { get; set; }
+    public int Parts { get; set; }
+    public IReadOnlyList<IReadOnlyList<FrameSpec>?> Frames { get; set; } = [];
+    /// <summary>Root motion, one frame per animation frame, or absent.</summary>
+    public IReadOnlyList<FrameSpec>? PosFrames { get; set; }
 }
 
 /// <summary>One animation hook: its type, direction and payload fields by name (docs/formats.md lists each type's fields).</summary>

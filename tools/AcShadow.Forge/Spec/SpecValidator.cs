@@ -39,6 +39,32 @@ public static class SpecValidator
             gfxObjs.Add(ValidateGfxObj(g, id, where));
         }
 
+        var animations = new List<Animation>();
+        var animationIds = new Dictionary<uint, int>();
+        var animationList = spec.Animations ?? [];
+        for (var i = 0; i < animationList.Count; i++)
+        {
+            var a = animationList[i] ?? throw new SpecException($"animations[{i}]: is null; expected an object with id, parts, frames");
+            var id = ParseId(a.Id, $"animations[{i}]", DatObjectKind.Animation);
+            var where = $"animations[{i}] (0x{id:X8})";
+            if (animationIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by animations[{first}]; give each animation its own id");
+            animationIds[id] = i;
+            animations.Add(ValidateAnimation(a, id, where));
+        }
+
+        var tables = new List<MotionTable>();
+        var tableIds = new Dictionary<uint, int>();
+        var tableList = spec.MotionTables ?? [];
+        for (var i = 0; i < tableList.Count; i++)
+        {
+            var t = tableList[i] ?? throw new SpecException($"motionTables[{i}]: is null; expected an object with id, defaultStyle, styleDefaults, cycles");
+            var id = ParseId(t.Id, $"motionTables[{i}]", DatObjectKind.MotionTable);
+            var where = $"motionTables[{i}] (0x{id:X8})";
+            if (tableIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by motionTables[{first}]; give each motion table its own id");
+            tableIds[id] = i;
+            tables.Add(ValidateMotionTable(t, id, where, animationIds));
+        }
+
         var setups = new List<Setup>();
         var setupIds = new Dictionary<uint, int>();
         var setupList = spec.Setups ?? [];
@@ -49,7 +75,11 @@ public static class SpecValidator
             var where = $"setups[{i}] (0x{id:X8})";
             if (setupIds.TryGetValue(id, out var first)) throw new SpecException($"{where}: duplicate id, already declared by setups[{first}]; give each setup its own id");
             setupIds[id] = i;
-            setups.Add(ValidateSetup(s, id, where, gfxIds));
+            setups.Add(ValidateSetup(s, id, where, gfxIds) with
+            {
+                DefaultAnimation = Declared(s.DefaultAnimation, $"{where} defaultAnimation", DatObjectKind.Animation, animationIds, "animations"),
+                DefaultMotionTable = Declared(s.DefaultMotionTable, $"{where} defaultMotionTable", DatObjectKind.MotionTable, tableIds, "motionTables"),
+            });
         }
 
         var environments = new List<ForgeEnvironment>();
@@ -83,7 +113,101 @@ public static class SpecValidator
             cells.AddRange(landblockCells);
         }
 
-        return new ValidSpec(spec.Iteration, gfxObjs, setups, landblocks) { Environments = environments, Cells = cells };
+        return new ValidSpec(spec.Iteration, gfxObjs, setups, landblocks) { MotionTables = tables, Animations = animations, Environments = environments, Cells = cells };
+    }
+
+    /// <summary>0 when absent; else an id of the kind that this spec declares.</summary>
+    private static uint Declared(string? text, string at, DatObjectKind kind, Dictionary<uint, int> declared, string list)
+    {
+        if (text is null) return 0;
+        var id = ParseId(text, at, kind);
+        if (!declared.ContainsKey(id)) throw new SpecException($"{at}: 0x{id:X8} is not one of this spec's {list}; declare it");
+        return id;
+    }
+
+    private static Animation ValidateAnimation(AnimationSpec a, uint id, string where)
+    {
+        if (a.Parts < 0) throw new SpecException($"{where}: parts {a.Parts} is negative");
+        var frames = (a.Frames ?? []).Select((f, i) =>
+        {
+            var at = $"{where} frames[{i}]";
+            var parts = f ?? throw new SpecException($"{at}: is null; expected one frame per part");
+            if (parts.Count != a.Parts)
+                throw new SpecException($"{at}: has {parts.Count} part frame(s) but the animation has {a.Parts} part(s); the dat stores exactly one per part, so give {a.Parts}");
+            return new AnimationFrame(parts.Select((p, j) => Frame(p, $"{at}[{j}]")).ToArray(), []);
+        }).ToArray();
+        Frame[]? pos = null;
+        if (a.PosFrames is { } posSpecs)
+        {
+            if (posSpecs.Count != frames.Length)
+                throw new SpecException($"{where}: posFrames has {posSpecs.Count} frame(s) for {frames.Length} animation frame(s); the dat stores one per frame");
+            pos = posSpecs.Select((p, i) => Frame(p, $"{where} posFrames[{i}]")).ToArray();
+        }
+        return new Animation(id, pos is null ? 0 : Animation.HasPosFrames, a.Parts, pos, frames);
+    }
+
+    private static MotionTable ValidateMotionTable(MotionTableSpec t, uint id, string where, Dictionary<uint, int> animationIds)
+    {
+        var missing = new HashSet<uint>();
+        foreach (var text in t.MissingAnimations ?? [])
+        {
+            var anim = ParseId(text, $"{where} missingAnimations", DatObjectKind.Animation);
+            if (animationIds.ContainsKey(anim)) throw new SpecException($"{where}: missingAnimations lists 0x{anim:X8}, but animations declares it; remove it from one of them");
+            missing.Add(anim);
+        }
+        var styles = new List<KeyValuePair<uint, uint>>();
+        foreach (var (d, i) in (t.StyleDefaults ?? []).Select((d, i) => (d, i)))
+        {
+            var at = $"{where} styleDefaults[{i}]";
+            if (d is null) throw new SpecException($"{at}: is null; expected {{style, substate}}");
+            var style = ParseHex(d.Style, $"{at} style");
+            if (styles.Any(p => p.Key == style)) throw new SpecException($"{at}: style 0x{style:X8} is given twice; keep one");
+            styles.Add(new(style, ParseHex(d.Substate, $"{at} substate")));
+        }
+        KeyValuePair<uint, MotionData>[] Motions(IReadOnlyList<MotionSpec>? specs, string list)
+        {
+            var result = new List<KeyValuePair<uint, MotionData>>();
+            foreach (var (m, i) in (specs ?? []).Select((m, i) => (m, i)))
+            {
+                var at = $"{where} {list}[{i}]";
+                if (m is null) throw new SpecException($"{at}: is null; expected {{style, motion, anims}}");
+                var key = MotionCommand.Key(ParseHex(m.Style, $"{at} style"), ParseHex(m.Motion, $"{at} motion"));
+                if (result.Any(p => p.Key == key)) throw new SpecException($"{at}: key 0x{key:X8} is given twice in {list}; keep one");
+                result.Add(new(key, Motion(m.Bitfield, m.Anims, m.Velocity, m.Omega, at)));
+            }
+            return [.. result];
+        }
+        MotionData Motion(int bitfield, IReadOnlyList<AnimDataSpec>? anims, double[]? velocity, double[]? omega, string at)
+        {
+            if (bitfield is < 0 or > byte.MaxValue) throw new SpecException($"{at}: bitfield {bitfield} is not a byte (0-255)");
+            var list = anims ?? [];
+            if (list.Count > byte.MaxValue) throw new SpecException($"{at}: {list.Count} anims; a motion holds at most 255");
+            var data = list.Select((a, i) =>
+            {
+                var ad = $"{at} anims[{i}]";
+                if (a is null) throw new SpecException($"{ad}: is null; expected {{anim, lowFrame, highFrame, framerate}}");
+                var anim = ParseId(a.Anim, $"{ad} anim", DatObjectKind.Animation);
+                if (!animationIds.ContainsKey(anim) && !missing.Contains(anim))
+                    throw new SpecException($"{ad}: animation 0x{anim:X8} is not in this spec (declare it, or list it in missingAnimations)");
+                return new AnimData(anim, a.LowFrame, a.HighFrame, Finite(a.Framerate, $"{ad} framerate"));
+            }).ToArray();
+            return new MotionData((byte)bitfield, data,
+                velocity is null ? null : Vector(velocity, $"{at} velocity"), omega is null ? null : Vector(omega, $"{at} omega"));
+        }
+        var links = new List<KeyValuePair<uint, IReadOnlyList<KeyValuePair<uint, MotionData>>>>();
+        foreach (var (l, i) in (t.Links ?? []).Select((l, i) => (l, i)))
+        {
+            var at = $"{where} links[{i}]";
+            if (l is null) throw new SpecException($"{at}: is null; expected {{style, from, to, anims}}");
+            var key = MotionCommand.Key(ParseHex(l.Style, $"{at} style"), ParseHex(l.From, $"{at} from"));
+            var to = ParseHex(l.To, $"{at} to");
+            var index = links.FindIndex(p => p.Key == key);
+            var targets = index < 0 ? [] : links[index].Value.ToList();
+            if (targets.Any(p => p.Key == to)) throw new SpecException($"{at}: the link from key 0x{key:X8} to 0x{to:X8} is given twice; keep one");
+            targets.Add(new(to, Motion(l.Bitfield, l.Anims, null, null, at)));
+            if (index < 0) links.Add(new(key, targets)); else links[index] = new(key, targets);
+        }
+        return new MotionTable(id, ParseHex(t.DefaultStyle, $"{where} defaultStyle"), styles, Motions(t.Cycles, "cycles"), Motions(t.Modifiers, "modifiers"), links);
     }
 
     private static ForgeGfxObj ValidateGfxObj(GfxObjSpec g, uint id, string where)

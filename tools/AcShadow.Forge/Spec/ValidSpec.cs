@@ -10,6 +10,9 @@ public sealed record ValidSpec(
     IReadOnlyList<Setup> Setups,
     IReadOnlyList<LandBlockInfo> Landblocks)
 {
+    public IReadOnlyList<MotionTable> MotionTables { get; init; } = [];
+    public IReadOnlyList<Animation> Animations { get; init; } = [];
+
     /// <summary>Environments before their BSPs are built.</summary>
     public IReadOnlyList<ForgeEnvironment> Environments { get; init; } = [];
 

@@ -15,7 +15,7 @@ public sealed class PartSpheresModel : IShapeModel
 
     public PreparedModel Prepare(ChartSubject subject)
     {
-        var set = ShadowShapeBuilder.Build(subject.Setup, subject.GfxObjs, new ShapeBuildOptions(ShapePolicy.Retail, subject.EntityScale));
+        var set = subject.Build(subject.Options(ShapePolicy.Retail));
         var shapes = set.Shapes
             .Where(s => s.CollisionType == CollisionType.Bsp && s.LocalSphere is not null)
             .Select(s => new ShadowShape(ShapeSource.Part, s.SourceIndex, s.GfxObjId, CollisionType.Sphere, s.LocalSphere!.Value.Center, Quaternion.Identity, s.Scale, s.LocalSphere.Value.Radius, 0f, null));

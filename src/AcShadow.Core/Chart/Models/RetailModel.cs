@@ -14,7 +14,7 @@ public sealed class RetailModel : IShapeModel
 
     public PreparedModel Prepare(ChartSubject subject)
     {
-        var set = ShadowShapeBuilder.Build(subject.Setup, subject.GfxObjs, new ShapeBuildOptions(ShapePolicy.Retail, subject.EntityScale));
+        var set = subject.Build(subject.Options(ShapePolicy.Retail));
         return PreparedModel.Of(set.Shapes, subject, set.Diagnostics);
     }
 }

@@ -12,6 +12,7 @@ public static class ShapeModels
         new PartSpheresModel(),
         new PartBoxesModel(),
         new PartHullsModel(),
+        new PlacementPoseModel(),
     ];
 
     public static IShapeModel? Find(string name) => All.FirstOrDefault(m => string.Equals(m.Name, name, StringComparison.OrdinalIgnoreCase));

@@ -14,7 +14,7 @@ public sealed class UnionModel : IShapeModel
 
     public PreparedModel Prepare(ChartSubject subject)
     {
-        var set = ShadowShapeBuilder.Build(subject.Setup, subject.GfxObjs, new ShapeBuildOptions(ShapePolicy.Union, subject.EntityScale));
+        var set = subject.Build(subject.Options(ShapePolicy.Union));
         return PreparedModel.Of(set.Shapes, subject, set.Diagnostics);
     }
 }

@@ -7,6 +7,8 @@ namespace AcShadow.Core.Dat.Objects;
 /// A Setup (0x02xxxxxx): parts, placement frames, CylSpheres, Spheres, radius and height.
 /// Holding locations, connection points and lights are skipped on read (no collision meaning) and
 /// written empty; placement frames' animation hooks are kept as bytes (<see cref="AnimationHook"/>) and written back.
+/// The five ids at the end (default animation, script, motion table, sound table, script table) are kept:
+/// the first and third decide how a live object is posed.
 /// </summary>
 public sealed record Setup(
     uint Id,
@@ -26,6 +28,14 @@ public sealed record Setup(
 {
     private const int LocationTypeBytes = 4 + 28;
     private const int LightInfoBytes = 28 + 4 + 12;
+
+    /// <summary>The Animation a new object plays when no motion table state replaces it (0: none).</summary>
+    public uint DefaultAnimation { get; init; }
+    public uint DefaultScript { get; init; }
+    /// <summary>The MotionTable a new object gets before any weenie's own (0: none).</summary>
+    public uint DefaultMotionTable { get; init; }
+    public uint DefaultSoundTable { get; init; }
+    public uint DefaultScriptTable { get; init; }
 
     public PlacementFrame? FindPlacement(uint key) => PlacementFrames.FirstOrDefault(p => p.Placement == key);
 
@@ -48,13 +58,10 @@ public sealed record Setup(
         var placements = new PlacementFrame[placementCount];
         for (var p = 0; p < placementCount; p++)
         {
+            // A placement frame is an AnimationFrame of the Setup's part count, read by the same reader.
             var key = r.ReadUInt32();
-            var frames = new Frame[numParts];
-            for (var i = 0; i < numParts; i++) frames[i] = Frame.Read(r);
-            var hooks = new AnimationHook[r.ReadCount(r.ReadUInt32(), AnimationHookLayout.HeaderBytes, "animation hook")];
-            for (var h = 0; h < hooks.Length; h++)
-                hooks[h] = AnimationHook.Read(r, $"placement {Placement.Name(key)}, hook {h + 1} of {hooks.Length}");
-            placements[p] = new PlacementFrame(key, frames) { Hooks = hooks };
+            var frame = AnimationFrame.Read(r, numParts, $"placement {Placement.Name(key)}");
+            placements[p] = new PlacementFrame(key, frame.Frames) { Hooks = frame.Hooks };
         }
 
         var cylCount = r.ReadCount(r.ReadUInt32(), 20, "CylSphere");
@@ -71,9 +78,14 @@ public sealed record Setup(
         var sorting = Sphere.Read(r);
         var selection = Sphere.Read(r);
         SkipKeyed(r, LightInfoBytes, "light");
-        for (var i = 0; i < 5; i++) r.ReadUInt32(); // default animation, script, motion, sound and script tables
-
-        return new Setup(id, flags, parts, parents, scales, placements, cyls, spheres, height, radius, stepUp, stepDown, sorting, selection);
+        return new Setup(id, flags, parts, parents, scales, placements, cyls, spheres, height, radius, stepUp, stepDown, sorting, selection)
+        {
+            DefaultAnimation = r.ReadUInt32(),
+            DefaultScript = r.ReadUInt32(),
+            DefaultMotionTable = r.ReadUInt32(),
+            DefaultSoundTable = r.ReadUInt32(),
+            DefaultScriptTable = r.ReadUInt32(),
+        };
     }
 
     private static void SkipKeyed(DatBinaryReader r, int valueBytes, string what)
@@ -124,6 +136,10 @@ public sealed record Setup(
         SortingSphere.Write(w);
         SelectionSphere.Write(w);
         w.WriteInt32(0);
-        for (var i = 0; i < 5; i++) w.WriteUInt32(0);
+        w.WriteUInt32(DefaultAnimation);
+        w.WriteUInt32(DefaultScript);
+        w.WriteUInt32(DefaultMotionTable);
+        w.WriteUInt32(DefaultSoundTable);
+        w.WriteUInt32(DefaultScriptTable);
     }
 }

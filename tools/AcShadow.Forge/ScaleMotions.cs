@@ -1,0 +1,87 @@
+using AcShadow.Core.Catalog;
+using AcShadow.Forge.Spec;
+
+namespace AcShadow.Forge;
+
+/// <summary>
+/// The scale spec's motion: every door is posed by a motion table (a catalog door by its catalog table,
+/// the rest by a shared door table named as their DefaultMotionTable), half the creatures get one of a
+/// few dozen creature tables, and one static in ten an animation (a DefaultAnimation, or one in twenty a
+/// table of its own kind). Tables and animations are shared across Setups as in a retail dat. Drawn from
+/// a Random of its own, so adding motion does not change the geometry the seed gives.
+/// </summary>
+internal static class ScaleMotions
+{
+    private const uint NonCombat = 0x8000003D, Ready = 0x41000003, On = 0x4000000B, Off = 0x4000000C;
+    private const int CreatureTables = 40, StaticAnimations = 60, StaticTables = 20, MaxParts = ScaleSpecGenerator.MaxParts;
+
+    public static (List<MotionTableSpec> Tables, List<AnimationSpec> Animations) Assign(
+        IReadOnlyList<SetupSpec> doors, IReadOnlyList<SetupSpec> statics, IReadOnlyList<SetupSpec> creatures, int seed)
+    {
+        var random = new Random(seed ^ 0x5EED15);
+        var tables = new List<MotionTableSpec>();
+        var animations = new List<AnimationSpec>();
+        var nextAnim = 0x03000100u;
+        var nextTable = 0x09001000u;
+        string NewAnim(int parts, int frames, Func<int, int, FrameSpec> frame)
+        {
+            var id = Hex(nextAnim++);
+            animations.Add(new AnimationSpec
+            {
+                Id = id,
+                Parts = parts,
+                Frames = Enumerable.Range(0, frames).Select(f => (IReadOnlyList<FrameSpec>?)Enumerable.Range(0, parts).Select(p => frame(f, p)).ToArray()).ToArray(),
+            });
+            return id;
+        }
+        MotionTableSpec Table(string id, uint substate, IEnumerable<(uint Motion, string Anim)> cycles) => new()
+        {
+            Id = id,
+            DefaultStyle = Hex(NonCombat),
+            StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(substate) }],
+            Cycles = cycles.Select(c => new MotionSpec { Style = Hex(NonCombat), Motion = Hex(c.Motion), Anims = [new AnimDataSpec { Anim = c.Anim }] }).ToArray(),
+        };
+
+        // Doors: closed = the door's Resting frames, open = its Default frames, from the first door using the table.
+        var doorTables = new Dictionary<string, SetupSpec>();
+        var sharedDoorTable = Hex(nextTable++);
+        foreach (var door in doors)
+        {
+            var catalog = DoorCatalog.Find(Parse(door.Id!))?.MotionTables.FirstOrDefault();
+            var table = catalog is { } c ? Hex(c) : sharedDoorTable;
+            if (catalog is null) door.DefaultMotionTable = sharedDoorTable;
+            doorTables.TryAdd(table, door);
+        }
+        foreach (var (table, door) in doorTables.OrderBy(p => p.Key, StringComparer.Ordinal))
+        {
+            var closed = door.Placements["Resting"]!;
+            var open = door.Placements["Default"]!;
+            tables.Add(Table(table, Off, [(Off, NewAnim(closed.Count, 1, (_, p) => closed[p])), (On, NewAnim(open.Count, 1, (_, p) => open[p]))]));
+        }
+
+        // Creatures: a Ready cycle of 10 frames posing up to 30 parts (a table serves creatures of any part count).
+        var creatureTables = Enumerable.Range(0, CreatureTables)
+            .Select(_ => Table(Hex(nextTable++), Ready, [(Ready, NewAnim(MaxParts, 10, (f, p) => At(0, 0.01 * f, 0.1 * p)))])).ToArray();
+        tables.AddRange(creatureTables);
+        foreach (var creature in creatures)
+            if (random.Next(2) == 0) creature.DefaultMotionTable = creatureTables[random.Next(creatureTables.Length)].Id;
+
+        // Statics: waving flags and turning wheels, a few centimetres off their placement.
+        var staticAnims = Enumerable.Range(0, StaticAnimations).Select(_ => NewAnim(MaxParts, 5, (f, p) => At(0.02 * (f + 1), 0, 0.1 * p))).ToArray();
+        var staticTables = Enumerable.Range(0, StaticTables).Select(i => Table(Hex(nextTable++), Ready, [(Ready, staticAnims[i])])).ToArray();
+        tables.AddRange(staticTables);
+        foreach (var item in statics)
+            switch (random.Next(20))
+            {
+                case 0: item.DefaultMotionTable = staticTables[random.Next(staticTables.Length)].Id; break;
+                case 1: item.DefaultAnimation = staticAnims[random.Next(staticAnims.Length)]; break;
+            }
+        return (tables, animations);
+    }
+
+    private static FrameSpec At(double x, double y, double z) => new() { Origin = [x, y, z] };
+
+    private static string Hex(uint id) => $"0x{id:X8}";
+
+    private static uint Parse(string hex) => Convert.ToUInt32(hex[2..], 16);
+}
