@@ -26,6 +26,7 @@ internal static class DoctorChecks
         Placements(t),
         DefaultScale(t),
         PartsPosed(t),
+        MotionPose(t),
         Determinism(export, peakBytes),
     ];
 
@@ -172,6 +173,18 @@ internal static class DoctorChecks
                 C("tooSmall", small), C("maxExcessNanometres", t.MaxExcessNanometres),
             ],
             t.SphereTooSmall.Examples, "gfxobj");
+    }
+
+    private static DoctorCheck MotionPose(DoctorTallies t)
+    {
+        var fellBack = t.PoseFellBack.Objects;
+        var differs = t.PoseDiffers.Objects;
+        return new DoctorCheck("setup.motion-pose", Retail,
+            "a Setup with a DefaultAnimation or a motion table is posed by the animation frame current right after creation (CPartArray::InitDefaults, CPhysicsObj::InitDefaults, CMotionTable::SetDefaultState); none falls back to its placement pose for a missing table, state, animation or frame",
+            DoctorVerdicts.Of(t.WithMotion.Value, fellBack),
+            $"{N(t.MotionPosed.Value)}/{N(t.WithMotion.Value)} setups take their motion pose, {N(differs)} of them move a part from the placement pose",
+            [C("setupsWithMotion", t.WithMotion.Value), C("motionPosed", t.MotionPosed.Value), C("fellBackToPlacement", fellBack), C("poseDiffersFromPlacement", differs)],
+            t.PoseFellBack.Examples, "setup");
     }
 
     private static DoctorCheck PhysicsBspFlag(DoctorTallies t)

@@ -34,6 +34,9 @@ public static class DoctorRunner
             BspInspection.Inspect(gfxObj, t);
         });
 
+        // Motion tables and animations decoded once each, however many Setups share them. Not disposed:
+        // disposing would close the archive the caller owns.
+        var motions = new DatDatabase(portal);
         Parallel.ForEach(Ids(portal, DatObjectKind.Setup), parallel, id =>
         {
             t.Setups.Add();
@@ -42,6 +45,7 @@ public static class DoctorRunner
             t.SetupsDecoded.Add();
             BytesUsed(id, left, t);
             SetupInspection.Inspect(setup, gfx, t);
+            MotionPoseInspection.Inspect(setup, motions, t);
         });
 
         if (cell is not null)

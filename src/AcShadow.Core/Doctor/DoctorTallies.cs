@@ -40,6 +40,10 @@ internal sealed class DoctorTallies
     public readonly Counter PartsTotal = new();
     public readonly Finding PartsWithoutPose = new();
 
+    // Motion pose.
+    public readonly Counter WithMotion = new(), MotionPosed = new();
+    public readonly Finding PoseFellBack = new(), PoseDiffers = new();
+
     public long MaxExcessNanometres => Interlocked.Read(ref _maxExcessNanometres);
 
     public void ObserveExcess(long nanometres)

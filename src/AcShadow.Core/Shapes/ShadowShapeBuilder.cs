@@ -15,9 +15,6 @@ namespace AcShadow.Core.Shapes;
 /// </summary>
 public static class ShadowShapeBuilder
 {
-    /// <summary>How far a part may move from its placement pose before the file says the two poses differ.</summary>
-    public const float MovedMetres = 0.001f, MovedDegrees = 0.1f;
-
     public static ShadowShapeSet Build(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options, IMotionSource? motions = null)
     {
         var diagnostics = new List<Diagnostic>();
@@ -59,19 +56,7 @@ public static class ShadowShapeBuilder
     /// </summary>
     private static bool ReportMoves(Setup setup, ResolvedPose pose, List<Diagnostic> diagnostics)
     {
-        var moves = new List<string>();
-        var count = Math.Min(setup.Parts.Count, pose.MotionFrames!.Count);
-        for (var i = 0; i < count; i++)
-        {
-            var placed = PlacementPose(pose.Placement, setup.Parts.Count, i);
-            if (placed is not { } p) continue;
-            var m = pose.MotionFrames[i];
-            var metres = Vector3.Distance(p.Origin, m.Origin);
-            var dot = Math.Abs((double)Quaternion.Dot(Quaternion.Normalize(p.Orientation), Quaternion.Normalize(m.Orientation)));
-            var degrees = (float)(2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI);
-            if (metres > MovedMetres || degrees > MovedDegrees)
-                moves.Add(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"part {i} by {metres:0.###} m and {degrees:0.#} deg"));
-        }
+        var moves = PoseMoves.Between(setup, pose);
         if (moves.Count == 0) return false;
         var p0 = pose.Provenance;
         var by = p0.Source == PoseProvenance.DefaultAnimationSource ? "the DefaultAnimation" : $"MotionTable 0x{p0.MotionTableId:X8}";
@@ -79,10 +64,6 @@ public static class ShadowShapeBuilder
             $"the retail pose ({by}, Animation 0x{p0.AnimationId:X8} frame {p0.Frame}) moves {string.Join(", ", moves)} from placement {pose.Placement?.Name ?? PlacementResolution.NoneName}; --pose placement gives the placement pose"));
         return true;
     }
-
-    /// <summary>Where the placement pose puts part <paramref name="index"/>, or null when it gives it no pose.</summary>
-    private static Frame? PlacementPose(PlacementFrame? placement, int partCount, int index) =>
-        placement is { } frame ? (index < frame.Frames.Count ? frame.Frames[index] : null) : partCount == 1 ? Frame.Identity : null;
 
     private static GfxObj?[] LookUpParts(Setup setup, Func<uint, GfxObj?> gfxObjs, List<Diagnostic> diagnostics)
     {

@@ -66,7 +66,7 @@ public sealed class HarnessTests
 
         var ratios = root.GetProperty("ratios").EnumerateArray().ToArray();
         Assert.Equal(report.Ratios.Select(r => r.Name), ratios.Select(r => r.GetProperty("name").GetString()));
-        Assert.Equal(19, ratios.Length); // five write-workload targets on each of disk and memory, nine others (two of them the doctor's)
+        Assert.Equal(20, ratios.Length); // five write-workload targets on each of disk and memory, ten others (two the doctor's, one scene against chart)
         Assert.Contains(ratios, r => r.GetProperty("name").GetString()!.EndsWith("(memory)", StringComparison.Ordinal));
         Assert.All(ratios, r => Assert.True(r.GetProperty("value").GetDouble() > 0, r.ToString()));
         Assert.Contains("| Target | Measured | Goal | Met |", log.ToString());

@@ -25,6 +25,8 @@ public sealed class DoctorReportTests
         ["setup.placements"] = [SampleSpecAuthor.OtherOnlySetup],
         ["setup.default-scale"] = [SampleSpecAuthor.StaticSetup],
         ["setup.parts-posed"] = [SampleSpecAuthor.OtherOnlySetup],
+        // The door catalog gives both doors a table without its default cycle: they keep their placement pose.
+        ["setup.motion-pose"] = [SampleSpecAuthor.SinglePartDoorSetup, SampleSpecAuthor.DoubleDoorSetup],
     };
 
     [Fact]
@@ -45,6 +47,13 @@ public sealed class DoctorReportTests
         Assert.True(Count(planes, "internalNodes") > 0);
         Assert.Equal(Count(planes, "internalNodes"), Count(planes, "reproduced"));
         Assert.Equal(SampleDat.OpenPortal().ListIds(DatObjectKind.Setup).Count, Count(report.Check("reading.decode"), "setupsRead"));
+
+        // From the sample spec: the door's closed cycle, the animated static's table and the DefaultAnimation
+        // column each move a part; the two doors on the broken table fall back.
+        var pose = report.Check("setup.motion-pose");
+        Assert.Equal(3, Count(pose, "poseDiffersFromPlacement"));
+        Assert.Equal(2, Count(pose, "fellBackToPlacement"));
+        Assert.Equal(Count(pose, "setupsWithMotion"), Count(pose, "motionPosed") + Count(pose, "fellBackToPlacement"));
     }
 
     [Fact]
