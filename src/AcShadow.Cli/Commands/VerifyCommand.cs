@@ -121,9 +121,7 @@ public static class VerifyCommand
     private static byte[] ReadFixture(string folder, string relative)
     {
         var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
-        var kind = FileKinds.Of(full, followLinks: true);
-        if (kind is not (FileKind.Regular or FileKind.Unknown))
-            throw new CliException(ExitCodes.Usage, $"--fixtures: {full} is {FileKinds.Describe(kind)}, not a regular file: a fixtures folder holds only the files batch wrote");
+        InputFile.RequireRegular(full, ExitCodes.Usage, "--fixtures", "a fixtures folder holds only the files batch wrote");
         try
         {
             return File.ReadAllBytes(full);

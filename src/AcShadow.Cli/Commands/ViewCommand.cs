@@ -195,7 +195,7 @@ public static class ViewCommand
 
     private static T ReadFixture<T>(string path, Func<string, T> read)
     {
-        RequireRegular(path, "--fixtures");
+        InputFile.RequireRegular(path, ExitCodes.Usage, "--fixtures", "pass the folder acshadow wrote");
         try
         {
             return read(File.ReadAllText(path));
@@ -210,20 +210,12 @@ public static class ViewCommand
         }
     }
 
-    /// <summary>Asked before opening: opening a FIFO waits for a writer, and a device never ends.</summary>
-    private static void RequireRegular(string path, string option)
-    {
-        var kind = FileKinds.Of(path, followLinks: true);
-        if (kind is not (FileKind.Regular or FileKind.Unknown))
-            throw new CliException(ExitCodes.Usage, $"{option}: {path} is {FileKinds.Describe(kind)}, not a regular file: pass the folder acshadow wrote");
-    }
-
     private static IReadOnlyList<ChartFailure> ReadFailures(string folder)
     {
         var path = Path.Combine(folder, "failures.csv");
         if (!File.Exists(path))
             throw new CliException(ExitCodes.Usage, $"--chart: {path} does not exist: pass the folder `acshadow chart --out` wrote");
-        RequireRegular(path, "--chart");
+        InputFile.RequireRegular(path, ExitCodes.Usage, "--chart", "pass the folder acshadow wrote");
         try
         {
             return ChartFailure.ParseCsv(File.ReadAllText(path));

@@ -59,9 +59,7 @@ public static class DatLocator
                 ? $"{source}: folder {path} has no {expectedName}: pass the dat file itself or the folder that holds it"
                 : $"{source}: {path} does not exist: pass the path of your {expectedName} (or the folder holding it)");
         // Checked before opening: opening a FIFO would wait for a writer forever, and a device has no length.
-        if (kind is not (FileKind.Regular or FileKind.Unknown))
-            throw new CliException(ExitCodes.DatUnreadable,
-                $"{source}: {file} is {FileKinds.Describe(kind)}, not a regular file: pass your {expectedName} (a dat is read at random places, so it cannot be streamed)");
+        InputFile.RequireRegular(file, kind, ExitCodes.DatUnreadable, source, $"pass your {expectedName} (a dat is read at random places, so it cannot be streamed)");
         var length = new FileInfo(file).ResolveLinkTarget(returnFinalTarget: true) is FileInfo target ? target.Length : new FileInfo(file).Length;
         if (length < DatHeader.Size)
             throw new CliException(ExitCodes.DatUnreadable,
