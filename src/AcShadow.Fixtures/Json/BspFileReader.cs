@@ -25,7 +25,7 @@ public static class BspFileReader
     /// The tree part of a BSP file (boundingSphere, vertices, polygons, nodes, stats), wherever it sits: a
     /// cell file carries its PhysicsBSP in this shape too.
     /// </summary>
-    public static BspDump ReadBody(JsonElement root, uint id, IReadOnlyList<string> diagnostics)
+    internal static BspDump ReadBody(JsonElement root, uint id, IReadOnlyList<string> diagnostics)
     {
         var vertices = Arr(root, "vertices").Select(v => new BspVertex(Int(v, "id"), Vec(Prop(v, "position")))).ToArray();
         var polygons = Arr(root, "polygons").Select(p => new BspPolygon(
