@@ -41,16 +41,18 @@ public static class AcShadowApp
         }
         catch (Exception thrown)
         {
-            // A parallel loop wraps what a worker threw; the first worker's exception is the one to report.
-            var e = thrown is AggregateException a ? a.Flatten().InnerExceptions[0] : thrown;
+            var e = Unwrap(thrown);
             var (code, message) = e switch
             {
                 CliException c => (c.ExitCode, c.Message),
                 StandardOutputException o => (ExitCodes.OutputFailed, $"cannot write to standard output: {o.Message} (redirect it to a file or pipe that can take it)"),
                 // Ctrl-C where no command said what it had written (e.g. while the dat was being read).
                 OperationCanceledException => (ExitCodes.Interrupted, "interrupted: nothing was written"),
+                // The runtime reports a thread it could not start as out of memory, also when descriptors ran out.
+                OutOfMemoryException when e.StackTrace?.Contains("Thread.StartCore", StringComparison.Ordinal) == true => (ExitCodes.InternalError, "cannot start a worker thread: too few file descriptors or threads (raise `ulimit -n` or `ulimit -u`, or pass --jobs 1)"),
                 OutOfMemoryException => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
                 FileNotFoundException or FileLoadException when e.Message.Contains("assembly", StringComparison.Ordinal) => (ExitCodes.InternalError, Describe(e)),
+                IOException when DescriptorsExhausted(e) => (ExitCodes.InternalError, Describe(e)),
                 DatFormatException d => (ExitCodes.DatUnreadable, d.Message.StartsWith("corrupt dat", StringComparison.Ordinal) ? d.Message : $"corrupt dat: {d.Message}"),
                 // Output writes and the --setups file are wrapped where they happen, so a bare I/O error is the dat's.
                 IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),
@@ -69,10 +71,31 @@ public static class AcShadowApp
         }
     }
 
+    /// <summary>
+    /// The exception that says what went wrong: a parallel loop wraps what a worker threw (the first worker's
+    /// is reported); a type initializer or the task scheduler wraps, for example, an assembly that could not load.
+    /// </summary>
+    private static Exception Unwrap(Exception thrown)
+    {
+        var e = thrown;
+        while (true)
+        {
+            if (e is AggregateException a) e = a.Flatten().InnerExceptions[0];
+            else if (e is TypeInitializationException or TaskSchedulerException && e.InnerException is { } inner) e = inner;
+            else return e;
+        }
+    }
+
     /// <summary>A failure of acshadow's own process rather than its input: which part could not load, and the likely cause.</summary>
-    public static string Describe(Exception e) => e is FileNotFoundException or FileLoadException
-        ? $"cannot load part of acshadow itself ({OneLine(e.Message)}): too few file descriptors (ulimit -n) or an incomplete installation"
-        : $"internal error: {OneLine(e.Message)} (run with --verbose for the stack trace, and please report it)";
+    public static string Describe(Exception thrown) => Unwrap(thrown) switch
+    {
+        var e when e is FileNotFoundException or FileLoadException => $"cannot load part of acshadow itself ({OneLine(e.Message)}): too few file descriptors (ulimit -n) or an incomplete installation",
+        var e when DescriptorsExhausted(e) => $"too few file descriptors: {OneLine(e.Message)} (raise the limit, e.g. `ulimit -n 1024`; acshadow needs about 100)",
+        var e => $"internal error: {OneLine(e.Message)} (run with --verbose for the stack trace, and please report it)",
+    };
+
+    // EMFILE (the process's limit) and ENFILE (the system's): .NET gives an I/O error the errno as its HResult on Unix; both are 24 and 23 on Linux and macOS.
+    private static bool DescriptorsExhausted(Exception e) => e is IOException { HResult: 24 or 23 } && !OperatingSystem.IsWindows();
 
     /// <summary>Every error is one line, even when an exception's message (or a path in it) holds line breaks.</summary>
     private static string OneLine(string message) =>

@@ -11,12 +11,19 @@ try
 // acshadow's own assemblies (no file descriptors left, a broken install). One line, never a stack trace.
 catch (Exception e)
 {
+    var line = "acshadow: cannot load part of acshadow itself: too few file descriptors (ulimit -n) or an incomplete installation";
     try
     {
-        Console.Error.WriteLine($"acshadow: {AcShadowApp.Describe(e)}");
+        line = $"acshadow: {AcShadowApp.Describe(e)}";
+        Report(line);
     }
     catch (Exception)
     {
+        RawStandardError.WriteLine(line);
     }
     return ExitCodes.InternalError;
 }
+
+// Its own method so that compiling Main needs no System.Console: with few descriptors that assembly may not
+// load, and then it is this call that fails, inside the try above.
+static void Report(string line) => Console.Error.WriteLine(line);

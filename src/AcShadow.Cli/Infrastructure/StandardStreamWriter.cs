@@ -6,8 +6,9 @@ namespace AcShadow.Cli.Infrastructure;
 /// stdout or stderr as a command writes to it, with a failure of the stream itself told apart from a
 /// failure of the work: stdout that cannot take the output (a full disk behind `> file`, /dev/full, a
 /// closed descriptor) is <see cref="StandardOutputException"/> (exit 6, not "reading the dat failed");
-/// stderr that cannot be written is dropped, since there is nowhere left to say anything, and the exit
-/// code still tells.
+/// a line for stderr that Console cannot write (it may need an assembly that can no longer load) goes out
+/// through <see cref="RawStandardError"/>; where that fails too, there is nowhere left to say anything, and
+/// the exit code still tells.
 /// </summary>
 public sealed class StandardStreamWriter : TextWriter
 {
@@ -34,11 +35,11 @@ public sealed class StandardStreamWriter : TextWriter
     public override void Write(char value) => Guard(w => w.Write(value));
     public override void Write(string? value) => Guard(w => w.Write(value));
     public override void Write(char[] buffer, int index, int count) => Guard(w => w.Write(buffer, index, count));
-    public override void WriteLine(string? value) => Guard(w => w.WriteLine(value));
+    public override void WriteLine(string? value) => Guard(w => w.WriteLine(value), value);
     public override void WriteLine() => Guard(w => w.WriteLine());
     public override void Flush() => Guard(w => w.Flush());
 
-    private void Guard(Action<TextWriter> write)
+    private void Guard(Action<TextWriter> write, string? line = null)
     {
         if (_broken is null)
         {
@@ -53,6 +54,7 @@ public sealed class StandardStreamWriter : TextWriter
             }
         }
         if (!_isError) throw new StandardOutputException(_broken);
+        if (line is not null) RawStandardError.WriteLine(line);
     }
 }
 

@@ -13,9 +13,12 @@ public static class AbandonedTemporaries
 {
     private static readonly string[] OutputExtensions = [".json", ".csv", ".svg", ".glb", WriteProbe.Name];
 
+    /// <summary>Best effort: a folder that cannot be listed is left as it is, and the run's own writes say what is wrong.</summary>
     public static void Remove(string root)
     {
-        var folders = Directory.EnumerateDirectories(root).Prepend(root);
+        string[] folders;
+        try { folders = Directory.EnumerateDirectories(root).Prepend(root).ToArray(); }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException) { return; }
         foreach (var folder in folders)
         {
             IEnumerable<string> names;
