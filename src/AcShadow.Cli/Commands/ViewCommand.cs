@@ -9,21 +9,24 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
+using AcShadow.Core.Scenes.Compile;
 using AcShadow.Core.Shapes;
 using AcShadow.Core.View;
 using AcShadow.Files;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Commands;
 
 /// <summary>
-/// `acshadow view [--setup ID ...] [--landblock 0xXXYY] [--fixtures DIR] [--chart DIR] --out DIR`: each Setup
-/// (or the landblock) as a binary glTF model with one layer per shape model, and a three-view SVG drawing.
+/// `acshadow view [--setup ID ...] [--landblock 0xXXYY] [--fixtures DIR | --scene DIR] [--chart DIR] --out DIR`:
+/// each Setup (or the landblock) as a binary glTF model with one layer per shape model, and a three-view SVG
+/// drawing; with <c>--scene</c>, a compiled landblock with one layer per chosen model.
 /// </summary>
-public static class ViewCommand
+public static partial class ViewCommand
 {
     public const string DefaultOut = "acshadow-view";
 
@@ -32,6 +35,7 @@ public static class ViewCommand
         var setup = new Option<string[]>("--setup") { Description = "a Setup to view, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
         var selection = new SelectionOptions();
         var fixtures = new Option<string?>("--fixtures") { Description = "read a folder `dump` or `batch` wrote (shadow files, BSP dumps, scene.json) instead of a dat; with no --setup or --landblock, everything in it", HelpName = "DIR" };
+        var compiled = new Option<string?>("--scene") { Description = "read a folder `scene` wrote (compiled-scene.json and its BSP dumps) instead of a dat: the landblock with each object as its chosen model", HelpName = "DIR" };
         var chart = new Option<string?>("--chart") { Description = "a folder `chart` wrote: its false passes and false blocks (failures.csv) become markers", HelpName = "DIR" };
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DefaultOut);
@@ -39,7 +43,7 @@ public static class ViewCommand
         var pose = new PoseOptions();
         var command = new Command("view", "Write each Setup (or a landblock) as a glTF model (.glb, one layer per shape model) and a three-view drawing (.svg)")
         {
-            setup, selection.Landblock, selection.CellDat, fixtures, chart, dat, outDir, scale,
+            setup, selection.Landblock, selection.CellDat, fixtures, compiled, chart, dat, outDir, scale,
         };
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
@@ -50,8 +54,21 @@ public static class ViewCommand
                 landblock = LandblockIds.TryParse(text, out var lb) ? lb
                     : throw new CliException(ExitCodes.Usage, $"--landblock: '{text}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
             var folder = parse.GetValue(fixtures);
-            if (folder is null && ids.Length == 0 && landblock is null)
-                throw new CliException(ExitCodes.Usage, "choose what to view: --setup ID (repeatable), --landblock 0xXXYY, or --fixtures DIR");
+            var sceneFolder = parse.GetValue(compiled);
+            if (folder is null && sceneFolder is null && ids.Length == 0 && landblock is null)
+                throw new CliException(ExitCodes.Usage, "choose what to view: --setup ID (repeatable), --landblock 0xXXYY, --fixtures DIR or --scene DIR");
+            if (sceneFolder is not null)
+            {
+                if (ids.Length > 0 || folder is not null)
+                    throw new CliException(ExitCodes.Usage, "--scene draws one compiled landblock: drop --setup and --fixtures (view them in a run of their own)");
+                if (parse.GetValue(dat) is not null || parse.GetValue(selection.CellDat) is not null)
+                    throw new CliException(ExitCodes.Usage, "--scene reads only the folder `acshadow scene` wrote: drop --dat and --cell-dat");
+                if (parse.GetValue(scale) is not null || pose.All.Any(o => parse.GetResult(o) is not null))
+                    throw new CliException(ExitCodes.Usage, "--scene views the objects at the scale and in the pose they were compiled with: drop --scale, --pose, --state and --motion-table");
+                OutputPaths.RequireNamed(parse.GetValue(outDir)!);
+                var markers = parse.GetValue(chart) is { } dir ? ReadFailures(dir) : [];
+                return Write(console, parse.GetValue(outDir)!, [FromCompiledScene(sceneFolder, landblock, markers)]);
+            }
             if (folder is not null && (parse.GetValue(dat) is not null || parse.GetValue(selection.CellDat) is not null))
                 throw new CliException(ExitCodes.Usage, "--fixtures reads only the folder's JSON: drop --dat and --cell-dat");
             if (folder is not null && parse.GetValue(scale) is not null)
@@ -121,8 +138,8 @@ public static class ViewCommand
         return scenes;
     }
 
-    /// <summary>Until a compiled scene format exists, a landblock shows every model of every object.</summary>
-    private const string CompiledSceneNote = "Every object is shown under every model; a compiled scene's chosen model per object is not read yet.";
+    /// <summary>A landblock from a dat or fixtures shows every model of every object; a compiled scene shows each object's chosen one.</summary>
+    private const string CompiledSceneNote = "Every object is shown under every model; `acshadow view --scene DIR` draws each object as the model `acshadow scene` chose for it.";
 
     private static IReadOnlyList<ViewScene> FromFixtures(CliConsole console, string folder, uint[] ids, uint? landblock, IReadOnlyList<ChartFailure> failures)
     {
@@ -186,6 +203,54 @@ public static class ViewCommand
     }
 
     private const string ShadowSuffix = ".shadow.json";
+
+    /// <summary>
+    /// A folder `acshadow scene` wrote: refused unless the consumer library loads it (<see cref="CompiledScene.Read"/>)
+    /// and every BSP dump it names is the one its id names; no dat is read.
+    /// </summary>
+    private static ViewScene FromCompiledScene(string folder, uint? landblock, IReadOnlyList<ChartFailure> failures)
+    {
+        const string Fix = "pass the folder `acshadow scene --out` wrote";
+        if (!Directory.Exists(folder))
+            throw new CliException(ExitCodes.Usage, $"--scene: {folder} is not a folder: {Fix}");
+        var path = Path.Combine(folder, CompiledSceneFormat.Path);
+        if (!File.Exists(path))
+            throw new CliException(ExitCodes.Usage, $"--scene: {folder} has no {CompiledSceneFormat.Path}: {Fix} (acshadow scene --landblock 0xXXYY --out {folder})");
+        var dumps = new Dictionary<string, BspDump>(StringComparer.Ordinal);
+        BspDump Dump(string file)
+        {
+            if (dumps.TryGetValue(file, out var known)) return known;
+            // Only the dumps `scene` writes, so a file naming "../x" reads nothing outside the folder.
+            if (!DumpPath().IsMatch(file))
+                throw new FormatException($"\"{file}\" is not a BSP dump `acshadow scene` writes (gfxobjs/0x%08X.bsp.json or cells/0x%08X.bsp.json)");
+            var dumpPath = Path.Combine(folder, file);
+            if (!File.Exists(dumpPath)) throw new FormatException($"it names {file}, which is missing");
+            InputFile.RequireRegular(dumpPath, ExitCodes.Usage, "--scene", Fix);
+            return dumps[file] = BspFileReader.Read(File.ReadAllText(dumpPath));
+        }
+        InputFile.RequireRegular(path, ExitCodes.Usage, "--scene", Fix);
+        CompiledSceneDrawing drawing;
+        try
+        {
+            var json = File.ReadAllText(path);
+            drawing = CompiledSceneDrawing.Read(json, Dump);
+            CompiledScene.Read(json, Dump);
+        }
+        catch (Exception e) when (e is FormatException or JsonException or InvalidOperationException or KeyNotFoundException or IndexOutOfRangeException or ArgumentException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--scene: {path} is not a compiled scene this version reads: {e.Message}");
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--scene: cannot read a file of {folder}: {e.Message}");
+        }
+        if (landblock is { } lb && lb != drawing.LandblockId)
+            throw new CliException(ExitCodes.NotInDat, $"--scene: {path} compiles landblock {LandblockIds.Short(drawing.LandblockId)}, not {LandblockIds.Short(lb)}");
+        return ViewSceneBuilder.ForCompiledScene(drawing, failures);
+    }
+
+    [System.Text.RegularExpressions.GeneratedRegex(@"^(gfxobjs|cells)/0x[0-9A-F]{8}\.bsp\.json$")]
+    private static partial System.Text.RegularExpressions.Regex DumpPath();
 
     private static string PolicyName(string sceneJson)
     {

@@ -56,6 +56,7 @@ public static class CommandExamples
             "acshadow view --setup 0x020019FF --out v",
             "acshadow view --fixtures fixtures --out v",
             "acshadow view --setup 0x020019FF --chart chart-door --out v",
+            "acshadow view --scene compiled-a9b4 --out v",
         ],
         ["doctor"] =
         [

@@ -12,7 +12,8 @@ namespace AcShadow.Core.View;
 /// <summary>
 /// Turns a shadow shape into triangles and an outline in its entity's frame. A BSP part is its physics
 /// polygons, posed as the collision reference poses them (<see cref="PartPose"/>), each polygon with its
-/// retail plane's normal; a polygon whose SidesType is not single-sided (0) is two-sided. Cylinders and
+/// retail plane's normal; a polygon whose SidesType is not single-sided (0) is two-sided. A compiled
+/// scene's fitted solids (part boxes, part hulls) are their faces, one-sided and outward. Cylinders and
 /// spheres get 32 segments around (and a sphere 16 bands), enough to read as round.
 /// </summary>
 public static class ShapeTessellation
@@ -37,9 +38,12 @@ public static class ShapeTessellation
         _ => null,
     };
 
-    public static ViewShape Bsp(ShadowShape shape, BspDump dump)
+    public static ViewShape Bsp(ShadowShape shape, BspDump dump) =>
+        Polygons(NameOf(shape), new PartPose(shape.LocalPosition, shape.LocalRotation, shape.Scale), dump);
+
+    /// <summary>A BSP dump's physics polygons posed by <paramref name="pose"/> (a part's in its entity, the identity for a cell in its own frame).</summary>
+    public static ViewShape Polygons(string name, PartPose pose, BspDump dump)
     {
-        var pose = new PartPose(shape.LocalPosition, shape.LocalRotation, shape.Scale);
         var vertices = new Dictionary<int, Vector3>();
         foreach (var v in dump.Vertices) vertices[v.Id] = pose.ToEntity(v.Position);
         var oneSided = new TriangleMesh();
@@ -50,14 +54,44 @@ public static class ShapeTessellation
             // A degenerate polygon has no plane and so no face to show; retail never hits it either.
             if (polygon.Plane is not { } plane || polygon.VertexIds.Any(id => !vertices.ContainsKey(id))) continue;
             var loop = polygon.VertexIds.Select(id => vertices[id]).ToArray();
-            var normal = QuaternionRotation.Rotate(pose.Rotation, plane.Normal);
-            if (pose.Scale < 0f) normal = new Vector3(-normal.X, -normal.Y, -normal.Z);
-            (polygon.SidesType == SidesType.Landblock ? oneSided : twoSided).AddPolygon(loop, normal);
+            (polygon.SidesType == SidesType.Landblock ? oneSided : twoSided).AddPolygon(loop, Posed(pose, plane.Normal));
             outline.Add(loop);
         }
+        return new ViewShape(name, oneSided, twoSided, new PolygonOutline(outline), Anchor(pose, outline));
+    }
+
+    /// <summary>A fitted part box (the compiled scene's <c>part-boxes</c>): its six faces, one-sided and outward, 12 triangles (a flat box its two faces, 4).</summary>
+    public static ViewShape Box(string name, PartPose pose, OrientedBox box) => Solid(name, pose, box.ToPolytope());
+
+    /// <summary>
+    /// A convex solid in a part's space (a part's hull, or a box as one): each face a one-sided polygon with
+    /// its outward plane normal, triangulated as a fan (a hull's faces are convex).
+    /// </summary>
+    public static ViewShape Solid(string name, PartPose pose, ConvexPolytope solid)
+    {
+        var mesh = new TriangleMesh();
+        var outline = new List<Vector3[]>();
+        foreach (var face in solid.Faces)
+        {
+            var loop = face.Vertices.Select(pose.ToEntity).ToArray();
+            mesh.AddPolygon(loop, Posed(pose, face.Normal));
+            outline.Add(loop);
+        }
+        return new ViewShape(name, mesh, new TriangleMesh(), new PolygonOutline(outline), Anchor(pose, outline));
+    }
+
+    /// <summary>A part-space normal in the entity: turned by the part's rotation, reversed by a mirroring (negative) scale.</summary>
+    private static Vector3 Posed(PartPose pose, Vector3 normal)
+    {
+        var turned = QuaternionRotation.Rotate(pose.Rotation, normal);
+        return pose.Scale < 0f ? new Vector3(-turned.X, -turned.Y, -turned.Z) : turned;
+    }
+
+    /// <summary>Where a part's label goes: its origin, at the height of the middle of what is drawn.</summary>
+    private static Vector3 Anchor(PartPose pose, List<Vector3[]> outline)
+    {
         var zs = outline.SelectMany(l => l).Select(v => v.Z).DefaultIfEmpty(pose.Position.Z).ToArray();
-        var anchor = pose.Position with { Z = (zs.Min() + zs.Max()) / 2 };
-        return new ViewShape(NameOf(shape), oneSided, twoSided, new PolygonOutline(outline), anchor);
+        return pose.Position with { Z = (zs.Min() + zs.Max()) / 2 };
     }
 
     public static ViewShape Cylinder(string name, Vector3 baseCentre, float radius, float height)

@@ -6,8 +6,9 @@ namespace AcShadow.Core.View;
 
 /// <summary>
 /// A <see cref="ViewScene"/> drawn as three orthographic views (top, front, side; <see cref="ThreeViewLayout"/>)
-/// at one scale, with a scale bar, a legend of the groups and numbered labels. The first group (the
-/// reference model) is filled; other models are outlines, dashed for union; chart failures are dots.
+/// at one scale, with a scale bar, a legend of the groups (their colours) and numbered labels. Filled groups
+/// (<see cref="ViewGroup.Filled"/>: the reference model, or each chosen model of a compiled scene) are drawn
+/// filled; other models are outlines, dashed for union; chart failures are dots.
 /// Hand-written SVG, two decimals, no timestamps: the same scene gives the same bytes.
 /// </summary>
 public static class ThreeViewSvg
@@ -28,18 +29,18 @@ public static class ThreeViewSvg
         Panel(svg, layout.TopCorner, layout.SpanX, layout.SpanY, "top: from above (x →, y ↑)");
         Panel(svg, layout.FrontCorner, layout.SpanX, layout.SpanZ, "front: from −y, looking north (x →, z ↑)");
         Panel(svg, layout.SideCorner, layout.SpanY, layout.SpanZ, "side: from +x, looking west (y →, z ↑)");
-        foreach (var (group, index) in view.Groups.Select((g, i) => (g, i)))
+        foreach (var group in view.Groups)
             foreach (var o in group.Objects)
                 foreach (var shape in o.Shapes)
                 {
-                    Draw(svg, layout.Top, group, index, o.Frame, shape.Outline);
-                    Draw(svg, layout.Front, group, index, o.Frame, shape.Outline);
-                    Draw(svg, layout.Side, group, index, o.Frame, shape.Outline);
+                    Draw(svg, layout.Top, group, o.Frame, shape.Outline);
+                    Draw(svg, layout.Front, group, o.Frame, shape.Outline);
+                    Draw(svg, layout.Side, group, o.Frame, shape.Outline);
                 }
 
         var keys = Keys(view);
         // A single object's shapes are told apart from the front; a landblock's objects from above.
-        Func<Vector3, (double X, double Y)> keyView = view.Groups.Count > 0 && view.Groups[0].Objects.Count > 1 ? layout.Top : layout.Front;
+        Func<Vector3, (double X, double Y)> keyView = KeysAreShapes(view) ? layout.Front : layout.Top;
         for (var k = 0; k < keys.Count; k++)
         {
             var (at, _) = keys[k];
@@ -60,25 +61,32 @@ public static class ThreeViewSvg
         return svg.Render();
     }
 
-    /// <summary>What the numbers name: the reference group's shapes of a single object, or the placed objects of a landblock.</summary>
+    /// <summary>
+    /// What the numbers name: the filled group's shapes of a single object, or the placed objects of a
+    /// landblock, each with its group's name when several groups are filled (a compiled scene's chosen models).
+    /// </summary>
     private static IReadOnlyList<(Vector3 At, string Label)> Keys(ViewScene view)
     {
-        if (view.Groups.Count == 0) return [];
-        var first = view.Groups[0];
-        if (first.Objects.Count == 1)
-            return first.Objects[0].Shapes.Select(s => (first.Objects[0].Frame.Apply(s.Anchor), $"{s.Name} ({first.Name})")).ToArray();
-        return first.Objects.Select(o => (o.Frame.Position, o.Name)).ToArray();
+        var keyed = KeyedGroups(view);
+        if (KeysAreShapes(view))
+            return keyed[0].Objects[0].Shapes.Select(s => (keyed[0].Objects[0].Frame.Apply(s.Anchor), $"{s.Name} ({keyed[0].Name})")).ToArray();
+        return keyed.SelectMany(g => g.Objects.Select(o => (o.Frame.Position, keyed.Count == 1 ? o.Name : $"{o.Name} ({g.Name})"))).ToArray();
     }
+
+    private static IReadOnlyList<ViewGroup> KeyedGroups(ViewScene view) =>
+        view.Groups.Any(g => g.Filled) ? view.Groups.Where(g => g.Filled).ToArray() : view.Groups.Take(1).ToArray();
+
+    private static bool KeysAreShapes(ViewScene view) => KeyedGroups(view) is [{ Objects.Count: 1 }];
 
     private static void Legend(SvgDocument svg, ViewScene view, double x, double y)
     {
-        foreach (var (group, index) in view.Groups.Select((g, i) => (g, i)))
+        foreach (var group in view.Groups)
         {
             var label = $"{group.Name} ({I(group.ShapeCount)} shape{(group.ShapeCount == 1 ? "" : "s")})";
             if (group.Objects.All(o => o.Shapes.All(s => s.Outline is PointsOutline)))
                 svg.Circle(x + 6, y - 4, 4, group.Colour, "#ffffff", 0.5);
             else
-                svg.Rect(x, y - 10, 12, 12, index == 0 ? group.Colour : "none", group.Colour, 1.5, fillOpacity: index == 0 ? 0.35 : 1, dash: Dash(group));
+                svg.Rect(x, y - 10, 12, 12, group.Filled ? group.Colour : "none", group.Colour, 1.5, fillOpacity: group.Filled ? 0.35 : 1, dash: Dash(group));
             svg.Text(x + 17, y, label, 12);
             x += 34 + label.Length * 6.6;
         }
@@ -100,10 +108,9 @@ public static class ThreeViewSvg
         svg.Text(x + length + 8, y + 4, $"{F(metres, metres < 1 ? 2 : 0)} m (scale bar, all views)", 11.5);
     }
 
-    private static void Draw(SvgDocument svg, Func<Vector3, (double X, double Y)> project, ViewGroup group, int index, ViewFrame frame, ShapeOutline outline)
+    private static void Draw(SvgDocument svg, Func<Vector3, (double X, double Y)> project, ViewGroup group, ViewFrame frame, ShapeOutline outline)
     {
-        var filled = index == 0;
-        var fill = filled ? group.Colour : "none";
+        var fill = group.Filled ? group.Colour : "none";
         var dash = Dash(group);
         switch (outline)
         {

@@ -29,7 +29,7 @@ public class SceneCompileTests
 
     private const uint GroundFloor = 0xA9B40100, Cellar = 0xA9B40101;
 
-    private static readonly Lazy<CompiledSceneReport> Exact = new(() => Compile(new SceneCompileOptions()));
+    internal static readonly Lazy<CompiledSceneReport> Exact = new(() => Compile(new SceneCompileOptions()));
 
     internal static CompiledSceneReport Compile(SceneCompileOptions options) =>
         SceneCompiler.Compile(SampleScene(), SampleChart.Subjects.Value, options, new FixedTimer());

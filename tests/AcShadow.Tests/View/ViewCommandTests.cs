@@ -31,7 +31,7 @@ public sealed class ViewCommandTests
         return run.Out;
     }
 
-    private static ModelRoot ReadStrict(string path) =>
+    internal static ModelRoot ReadStrict(string path) =>
         ModelRoot.ParseGLB(File.ReadAllBytes(path), new ReadSettings { Validation = ValidationMode.Strict });
 
     private static SetupFixture CommittedDoor() => SetupFixture.Load(CommittedFixturesTests.RepositoryFixtures(), Door);
@@ -59,7 +59,7 @@ public sealed class ViewCommandTests
         return (min, max);
     }
 
-    private static int Triangles(Node node) => node.Mesh.Primitives.Sum(p => p.GetTriangleIndices().Count());
+    internal static int Triangles(Node node) => node.Mesh.Primitives.Sum(p => p.GetTriangleIndices().Count());
 
     [Fact]
     public void The_door_glb_holds_each_model_in_its_group_with_the_shadow_files_triangles_and_bounds()
@@ -240,7 +240,7 @@ public sealed class ViewCommandTests
                 $"docs/view/{name} is stale: rerun `acshadow view --setup 0x020019FF --out docs/view`");
     }
 
-    private static void Rasterise(string svg, string png)
+    internal static void Rasterise(string svg, string png)
     {
         var start = new ProcessStartInfo("rsvg-convert", ["-o", png, svg]) { RedirectStandardError = true };
         Process? process;

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Regenerates the committed drawings under docs/view/ from the built-in forged sample: the sample door
+# (`view --setup 0x020019FF`) and the sample landblock compiled by `scene` (`view --scene`). Idempotent: the
+# output is byte-identical on every run and machine, so a rerun leaves no git diff; tests fail when they drift.
+# Usage: scripts/regenerate-drawings.sh            (from anywhere; needs the .NET 10 SDK)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
+# The drawings come from the built-in sample, never from a dat the caller happens to have configured.
+unset ACSHADOW_DAT
+
+dotnet build src/AcShadow.Cli -c Release --nologo -v quiet -clp:ErrorsOnly
+acshadow=(dotnet src/AcShadow.Cli/bin/Release/net10.0/acshadow.dll)
+
+scene="$(mktemp -d "${TMPDIR:-/tmp}/acshadow-scene.XXXXXX")"
+trap 'rm -rf "$scene"' EXIT
+"${acshadow[@]}" view --setup 0x020019FF --out docs/view
+"${acshadow[@]}" scene --landblock 0xA9B4 --out "$scene" --quiet
+"${acshadow[@]}" view --scene "$scene" --out docs/view
