@@ -246,6 +246,25 @@ public sealed class CompiledSceneViewTests
     }
 
     [Fact]
+    public void Chart_failures_are_markers_in_the_frame_of_the_compiled_object_they_belong_to()
+    {
+        using var scene = SceneFolder(HandBuilt());
+        using var chart = new TempDir();
+        // One false block of part-boxes beside the box (entity frame), as `chart` lists it.
+        File.WriteAllText(Path.Combine(chart.Path, "failures.csv"),
+            "setup,model,rank,failure,kind,line,offset_m,x,y,z,radius\n0x01000003,part-boxes,1,false_block,face,,,1.6,0,1,0.5\n");
+        using var output = new TempDir();
+        View(output, "--scene", scene.Path, "--chart", chart.Path);
+        var root = ViewCommandTests.ReadStrict(Path.Combine(output.Path, "0x1234-compiled.glb")).DefaultScene.VisualChildren.Single();
+        Assert.Equal(["spheres", "fallback-cylinder", "part-boxes", "part-hulls", "retail", "false blocks: part-boxes"], root.VisualChildren.Select(g => g.Name));
+        var marker = root.VisualChildren.Last().VisualChildren.Single();
+        Assert.Equal("false blocks: part-boxes: #2 GfxObj 0x01000003", marker.Name);
+        // The probe at (1.6, 0, 1) in the object's frame, which stands at (6, 2, 0).
+        AssertClose(Gltf(new Vector3(7.6f, 2, 1) - new Vector3(ViewSceneBuilder.MarkerRadius), new Vector3(7.6f, 2, 1) + new Vector3(ViewSceneBuilder.MarkerRadius)),
+            LandblockBounds(marker.VisualChildren.Single()));
+    }
+
+    [Fact]
     public void The_same_folder_gives_the_same_bytes_whatever_the_culture_and_where_it_is()
     {
         var json = HandBuilt();
