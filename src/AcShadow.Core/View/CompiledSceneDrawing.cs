@@ -40,24 +40,24 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
         if (format != FileFormats.CompiledScene)
             throw new FormatException($"its format is {(format is null ? "missing" : $"\"{format}\"")}, not \"{FileFormats.CompiledScene}\" (a file `acshadow scene` writes)");
         var landblock = Id(root, "landblockId");
-        var origin = root.GetProperty("worldOrigin");
+        var origin = Prop(root, "worldOrigin");
         var worldOrigin = new Vector3(Float(origin[0]), Float(origin[1]), Float(origin[2]));
-        var radii = root.GetProperty("moverRadii").EnumerateArray().Select(Float).ToArray();
+        var radii = Prop(root, "moverRadii").EnumerateArray().Select(Float).ToArray();
 
         var objects = new List<CompiledPlacement>();
         var undrawn = 0;
-        foreach (var o in root.GetProperty("objects").EnumerateArray())
+        foreach (var o in Prop(root, "objects").EnumerateArray())
         {
-            var index = o.GetProperty("index").GetInt32();
+            var index = Prop(o, "index").GetInt32();
             var id = Id(o, "id");
-            var kind = o.GetProperty("kind").GetString() switch
+            var kind = Prop(o, "kind").GetString() switch
             {
                 "setup" => "Setup",
                 "gfxObj" => "GfxObj",
                 var other => other ?? throw new FormatException($"object #{index}: \"kind\" is null"),
             };
             var name = $"#{index} {kind} {JsonIds.Format(id)}";
-            var model = o.GetProperty("model");
+            var model = Prop(o, "model");
             if (model.ValueKind == JsonValueKind.Null)
             {
                 undrawn++;
@@ -66,7 +66,7 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
             var modelName = model.GetString()!;
             if (!ModelLadder.Names.Contains(modelName))
                 throw new FormatException($"object #{index}: model \"{modelName}\" is none of the ladder's ({string.Join(", ", ModelLadder.Names)})");
-            var shapes = o.GetProperty("shapes").EnumerateArray().Select(s => Shape(s, bspFile)).OfType<ViewShape>().ToArray();
+            var shapes = Prop(o, "shapes").EnumerateArray().Select(s => Shape(s, bspFile)).OfType<ViewShape>().ToArray();
             objects.Add(new CompiledPlacement(name, id, modelName, Frame(o), shapes));
         }
 
@@ -74,49 +74,49 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
         foreach (var c in root.TryGetProperty("cells", out var list) ? list.EnumerateArray().ToArray() : [])
         {
             var cellId = Id(c, "cellId");
-            var file = c.GetProperty("file");
+            var file = Prop(c, "file");
             if (file.ValueKind == JsonValueKind.Null) continue;
             var dump = Dump(bspFile, file.GetString()!, CompiledSceneWriter.CellBspPath(cellId), cellId, $"cell {JsonIds.Format(cellId)}");
             cells.Add(new CompiledPlacement($"cell {JsonIds.Format(cellId)}", cellId, ViewModels.Cells, Frame(c),
                 [ShapeTessellation.Polygons($"cell {JsonIds.Format(cellId)} physics polygons", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), dump)]));
         }
-        return new CompiledSceneDrawing(landblock, worldOrigin, radii, root.GetProperty("tolerancePercent").GetDouble(), objects, cells, undrawn);
+        return new CompiledSceneDrawing(landblock, worldOrigin, radii, Prop(root, "tolerancePercent").GetDouble(), objects, cells, undrawn);
     }
 
     private static ViewShape? Shape(JsonElement s, Func<string, BspDump> bspFile)
     {
-        var type = s.GetProperty("type").GetString();
-        var source = s.GetProperty("source").GetString() ?? throw new FormatException("a shape's \"source\" is null");
+        var type = Prop(s, "type").GetString();
+        var source = Prop(s, "source").GetString() ?? throw new FormatException("a shape's \"source\" is null");
         var name = type == "bsp" ? source : $"{source} as {type}";
         switch (type)
         {
             case "sphere":
-                var r = Float(s.GetProperty("radius"));
-                return r > 0f ? ShapeTessellation.Sphere(name, Vec(s.GetProperty("center")), r) : null;
+                var r = Float(Prop(s, "radius"));
+                return r > 0f ? ShapeTessellation.Sphere(name, Vec(Prop(s, "center")), r) : null;
             case "cylinder":
-                var cr = Float(s.GetProperty("radius"));
-                var height = Float(s.GetProperty("height"));
-                return cr > 0f && height >= 0f ? ShapeTessellation.Cylinder(name, Vec(s.GetProperty("base")), cr, height) : null;
+                var cr = Float(Prop(s, "radius"));
+                var height = Float(Prop(s, "height"));
+                return cr > 0f && height >= 0f ? ShapeTessellation.Cylinder(name, Vec(Prop(s, "base")), cr, height) : null;
         }
-        var poseJson = s.GetProperty("pose");
-        var pose = new PartPose(Vec(poseJson.GetProperty("position")), Quat(poseJson.GetProperty("orientation")), Float(poseJson.GetProperty("scale")));
+        var poseJson = Prop(s, "pose");
+        var pose = new PartPose(Vec(Prop(poseJson, "position")), Quat(Prop(poseJson, "orientation")), Float(Prop(poseJson, "scale")));
         switch (type)
         {
             case "box":
-                return ShapeTessellation.Box(name, pose, new OrientedBox(Vec(s.GetProperty("center")), Quat(s.GetProperty("axes")), Vec(s.GetProperty("halfExtents"))));
+                return ShapeTessellation.Box(name, pose, new OrientedBox(Vec(Prop(s, "center")), Quat(Prop(s, "axes")), Vec(Prop(s, "halfExtents"))));
             case "hull":
-                var vertices = s.GetProperty("vertices").EnumerateArray().Select(Vec).ToArray();
-                var faces = s.GetProperty("faces").EnumerateArray().Select((face, i) =>
+                var vertices = Prop(s, "vertices").EnumerateArray().Select(Vec).ToArray();
+                var faces = Prop(s, "faces").EnumerateArray().Select((face, i) =>
                 {
-                    var corners = face.GetProperty("vertices").EnumerateArray().Select(e => e.GetInt32()).ToArray();
+                    var corners = Prop(face, "vertices").EnumerateArray().Select(e => e.GetInt32()).ToArray();
                     if (corners.Length < 3 || corners.Any(c => c < 0 || c >= vertices.Length))
                         throw new FormatException($"{source}: hull face {i}: vertex indices must name at least 3 of the hull's {vertices.Length} vertices");
-                    return new CompiledPolygon(i, new Plane(Vec(face.GetProperty("normal")), Float(face.GetProperty("d"))), corners.Select(c => vertices[c]).ToArray());
+                    return new CompiledPolygon(i, new Plane(Vec(Prop(face, "normal")), Float(Prop(face, "d"))), corners.Select(c => vertices[c]).ToArray());
                 }).ToArray();
                 return ShapeTessellation.Solid(name, pose, new ConvexPolytope(vertices, faces));
             case "bsp":
                 var gfxObj = Id(s, "gfxObjId");
-                return ShapeTessellation.Polygons(name, pose, Dump(bspFile, s.GetProperty("file").GetString()!, BspFileFormat.PathFor(gfxObj), gfxObj, source));
+                return ShapeTessellation.Polygons(name, pose, Dump(bspFile, Prop(s, "file").GetString()!, BspFileFormat.PathFor(gfxObj), gfxObj, source));
             default:
                 throw new FormatException($"{source}: shape type \"{type}\" is not sphere, cylinder, box, hull or bsp");
         }
@@ -133,20 +133,23 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
         return dump;
     }
 
+    private static JsonElement Prop(JsonElement e, string name) =>
+        e.ValueKind == JsonValueKind.Object && e.TryGetProperty(name, out var value) ? value : throw new FormatException($"\"{name}\" is missing");
+
     private static ViewFrame Frame(JsonElement e)
     {
-        var frame = e.GetProperty("landblockFrame");
-        return new ViewFrame(Vec(frame.GetProperty("origin")), Quat(frame.GetProperty("orientation")));
+        var frame = Prop(e, "landblockFrame");
+        return new ViewFrame(Vec(Prop(frame, "origin")), Quat(Prop(frame, "orientation")));
     }
 
     private static uint Id(JsonElement e, string name) =>
-        JsonIds.TryParse(e.GetProperty(name).GetString(), out var id) ? id : throw new FormatException($"\"{name}\" is not a hex id");
+        JsonIds.TryParse(Prop(e, name).GetString(), out var id) ? id : throw new FormatException($"\"{name}\" is not a hex id");
 
     private static Vector3 Vec(JsonElement e) =>
         e.GetArrayLength() == 3 ? new Vector3(Float(e[0]), Float(e[1]), Float(e[2])) : throw new FormatException("a vector has not 3 numbers");
 
     private static Quaternion Quat(JsonElement e) =>
-        new(Float(e.GetProperty("x")), Float(e.GetProperty("y")), Float(e.GetProperty("z")), Float(e.GetProperty("w")));
+        new(Float(Prop(e, "x")), Float(Prop(e, "y")), Float(Prop(e, "z")), Float(Prop(e, "w")));
 
     private static float Float(JsonElement e)
     {

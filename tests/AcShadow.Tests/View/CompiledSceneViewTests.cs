@@ -303,6 +303,7 @@ public sealed class CompiledSceneViewTests
         using var outsideUndrawn = SceneFolder(HandBuilt().Replace("\"model\": null, \"shapes\": []",
             "\"model\": null, \"shapes\": [" + """{"type": "bsp", "source": "part 0", "gfxObjId": "0x010044B5", "pose": {"position": [0, 0, 0], "orientation": {"w": 1, "x": 0, "y": 0, "z": 0}, "scale": 1}, "file": "../../0x010044B5.bsp.json"}""" + "]"));
         using var unknownModel = SceneFolder(HandBuilt(boxModel: "boxes"));
+        using var noExtents = SceneFolder(HandBuilt().Replace("\"halfExtents\"", "\"halfExtent\""));
         using var swapped = SceneFolder(HandBuilt());
         File.Copy(Path.Combine(swapped.Path, BspFileFormat.PathFor(Post)), Path.Combine(swapped.Path, BspFileFormat.PathFor(Leaf)), overwrite: true);
         using var missing = SceneFolder(HandBuilt());
@@ -317,6 +318,7 @@ public sealed class CompiledSceneViewTests
             (["--scene", otherFile.Path], 2, "not gfxobjs/0x010044B5.bsp.json (the file its id names)"),
             (["--scene", outside.Path], 2, "its BSP dump is \"../0x010044B5.bsp.json\", not gfxobjs/0x010044B5.bsp.json"),
             (["--scene", outsideUndrawn.Path], 2, "\"../../0x010044B5.bsp.json\" is not a BSP dump `acshadow scene` writes"),
+            (["--scene", noExtents.Path], 2, "\"halfExtents\" is missing"),
             (["--scene", unknownModel.Path], 2, "model \"boxes\" is none of the ladder's"),
             (["--scene", swapped.Path], 2, "holds the tree of 0x010044B6, not of 0x010044B5"),
             (["--scene", missing.Path], 2, "gfxobjs/0x010044B5.bsp.json, which is missing"),
