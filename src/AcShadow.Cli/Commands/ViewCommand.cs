@@ -18,7 +18,6 @@ using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
-using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Cli.Commands;
 

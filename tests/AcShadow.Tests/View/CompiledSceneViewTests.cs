@@ -184,7 +184,7 @@ public sealed class CompiledSceneViewTests
         Assert.Equal(GlbWriter.ToGltf(new Vector3(worldOrigin[0], worldOrigin[1], worldOrigin[2])), root.LocalTransform.Translation);
         foreach (var o in loaded.Objects)
         {
-            var kind = o.Kind == "setup" ? "Setup" : "GfxObj";
+            var kind = o.Kind == SceneObjectKind.Setup ? "Setup" : "GfxObj";
             var node = root.VisualChildren.Single(g => g.Name == o.Model).VisualChildren.Single(n => n.Name == $"{o.Model}: #{o.Index} {kind} {JsonIds.Format(o.Id)}");
             Assert.Equal(GlbWriter.ToGltf(o.LandblockPosition), node.LocalTransform.Translation);
             Assert.Equal(o.Shapes, node.VisualChildren.Count());
