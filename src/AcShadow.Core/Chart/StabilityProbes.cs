@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using System.Numerics;
 using AcShadow.Fixtures.Collision;
 
@@ -43,7 +44,7 @@ public static class StabilityProbes
         return probes;
     }
 
-    private static void Add(List<Probe> probes, PartPose pose, CompiledPolygon[] polygons, CompiledBspNode[] nodes, ChartOptions options)
+    private static void Add(List<Probe> probes, PartPose pose, ImmutableArray<CompiledPolygon> polygons, ImmutableArray<CompiledBspNode> nodes, ChartOptions options)
     {
         var delta = options.StabilityOffset / pose.Scale;
         var step = options.Spacing / pose.Scale;
@@ -108,7 +109,7 @@ public static class StabilityProbes
     /// Points over a polygon's fan triangles on a barycentric lattice about <paramref name="step"/> apart,
     /// corners left out (the vertex probes cover them); none for a polygon smaller than the step.
     /// </summary>
-    private static IEnumerable<Vector3> Lattice(Vector3[] v, float step)
+    private static IEnumerable<Vector3> Lattice(ImmutableArray<Vector3> v, float step)
     {
         for (var t = 1; t + 1 < v.Length; t++)
         {
@@ -132,7 +133,7 @@ public static class StabilityProbes
         return dx * dx + dy * dy + dz * dz;
     }
 
-    private static Vector3 Centroid(Vector3[] v)
+    private static Vector3 Centroid(ImmutableArray<Vector3> v)
     {
         var sum = Vector3.Zero;
         foreach (var p in v) sum += p;
