@@ -2,6 +2,7 @@ using System.Numerics;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes.Compile;
 
@@ -9,7 +10,7 @@ namespace AcShadow.Core.Scenes.Compile;
 /// What asking the whole scene about one mover position costs, counted as <see cref="QueryCost"/> counts
 /// an object (one unit a distance evaluation): each placed object's bounding sphere 1, and for a position
 /// inside it the turn into the object's frame and its model's count; then each cell's turn into its frame
-/// and its tree's count; stopping at the first that blocks, as <see cref="Fixtures.Scenes.SceneQuery"/> does.
+/// and its tree's count; stopping at the first that blocks, as <see cref="SceneQuery"/> does.
 /// </summary>
 public static class SceneCost
 {
