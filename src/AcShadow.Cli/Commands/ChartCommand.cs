@@ -35,9 +35,10 @@ public static class ChartCommand
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var jobs = new Option<string?>("--jobs") { Description = "objects charted side by side (default 1: times per query are then measured undisturbed)", HelpName = "N" };
         var pose = new PoseOptions();
+        var noCells = SelectionOptions.NoCells();
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
         {
-            setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, outDir, radius, spacing, scale, quiet, jobs,
+            setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, noCells, outDir, radius, spacing, scale, quiet, jobs,
         };
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
@@ -46,6 +47,7 @@ public static class ChartCommand
             var chosen = new BatchSelection(parse.GetValue(selection.Doors), parse.GetValue(selection.All), null, null);
             if (parse.GetValue(selection.Setups) is not null || parse.GetValue(selection.Landblock) is not null)
                 chosen = selection.Parse(parse, defaultToAll: false);
+            chosen = SelectionOptions.WithoutCells(chosen, parse.GetValue(noCells));
             if (ids.Length == 0 && chosen.IsEmpty)
                 throw new CliException(ExitCodes.Usage, "choose what to chart: --setup ID (repeatable), --doors, --all, --setups FILE and/or --landblock 0xXXYY");
             var options = new ChartOptions
@@ -86,7 +88,8 @@ public static class ChartCommand
         WriteProbe.Prepare(outDir);
         using var folder = OutputFolderLock.Acquire(outDir);
         AbandonedTemporaries.Remove(outDir);
-        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        var cells = planned?.Scene?.Cells ?? [];
+        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds, cells.Count > 0).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
 
         var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
@@ -166,6 +169,22 @@ public static class ChartCommand
         {
             progress.Finish();
         }
+        // The landblock's indoor cells, probed as `acshadow scene` probes them and answered by their retail trees.
+        var cellCharts = new List<CellChart>(cells.Count);
+        if (cells.Count > 0)
+        {
+            var structures = new Core.Scenes.Compile.CellStructures(dat.Portal);
+            var cellTimer = new StopwatchQueryTimer();
+            foreach (var cell in cells)
+            {
+                console.Interrupted.ThrowIfCancellationRequested();
+                var cellChart = CellChart.Of(cell, structures, options, cellTimer);
+                DiagnosticPrinter.Print(console.Error, JsonIds.Format(cell.Id), cellChart.Cell.Diagnostics);
+                cellCharts.Add(cellChart);
+            }
+            bytes += AtomicOutput.Write(outDir, CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));
+            dat.RequireUnchanged();
+        }
         var summaries = tally.Summaries();
         bytes += AtomicOutput.Write(outDir, "summary.csv", new UTF8Encoding(false).GetBytes(SummaryCsv.Write(summaries)));
         bytes += AtomicOutput.Write(outDir, "speed-accuracy.svg", new UTF8Encoding(false).GetBytes(SpeedAccuracySvg.Write(options, models[0], tally.Objects, summaries)));
@@ -179,13 +198,16 @@ public static class ChartCommand
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {s.FalsePass,7} false pass  {s.FalseBlock,7} false block  {s.Timing.MedianNs,8:0.0} ns/query median"));
         foreach (var line in cheapest) w.WriteLine(line);
+        if (cellCharts.Count > 0)
+            w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"  {cellCharts.Count} indoor cell(s) probed as retail ({cellCharts.Sum(c => c.Answers.Length)} probes, {cellCharts.Sum(c => c.Blocked)} blocked by their walls, floors and ceilings): {Path.Combine(outDir, CellsCsv.FileName)}"));
         if (charted > 20) w.WriteLine($"  ... cheapest exact model of every setup in {Path.Combine(outDir, "chart.csv")}");
         foreach (var group in planned?.Skipped.GroupBy(s => s.Reason) ?? [])
             w.WriteLine($"  skipped {group.Count()} ({group.Key}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}");
         if (unreadable.Count > 0)
             w.WriteLine($"  skipped {unreadable.Count} (unreadable, see the warnings): {IdSummary.Of(unreadable.Order().ToArray())}");
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  wrote {4 + mapsWritten} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
+            $"  wrote {4 + mapsWritten + (cellCharts.Count > 0 ? 1 : 0)} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
         return ExitCodes.Ok;
     }
 

@@ -38,15 +38,16 @@ public static class SceneCommand
         var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {ChartOptions.DefaultSpacing.ToString(CultureInfo.InvariantCulture)})", HelpName = "S" };
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
+        var noCells = SelectionOptions.NoCells();
         var command = new Command("scene", "Compile a landblock: each object's cheapest model that gives retail's answer, with the evidence and the scene's chart")
         {
-            selection.Landblock, dat, selection.CellDat, outDir, radius, tolerance, spacing, scale, quiet,
+            selection.Landblock, dat, selection.CellDat, outDir, radius, tolerance, spacing, scale, quiet, noCells,
         };
         command.SetAction(parse =>
         {
             if (parse.GetValue(selection.Landblock) is null)
                 throw new CliException(ExitCodes.Usage, "choose the landblock to compile: --landblock 0xXXYY");
-            var chosen = selection.Parse(parse, defaultToAll: false);
+            var chosen = SelectionOptions.WithoutCells(selection.Parse(parse, defaultToAll: false), parse.GetValue(noCells));
             var radii = (parse.GetValue(radius) ?? []).Select(t => Number(t, "--mover-radius", "a positive number of metres", 0.48, v => v > 0)).Select(v => (float)v).ToArray();
             var chart = new ChartOptions
             {
@@ -114,11 +115,10 @@ public static class SceneCommand
             $"scene {LandblockIds.Short(scene.LandBlockInfoId)} from {dat.Description}: {placed.Count} placed object(s), {distinct} distinct, {scene.Cells.Count} indoor cell(s) kept as retail, mover radius {string.Join(", ", options.Chart.Radii.Select(r => r.ToString(CultureInfo.InvariantCulture) + " m"))}, tolerance {options.TolerancePercent} %"));
         foreach (var group in placed.Select(p => p.Object).GroupBy(o => report.For(o)?.Model ?? "unresolved").OrderBy(g => g.Key, StringComparer.Ordinal))
             w.WriteLine($"  {group.Key,-18} {group.Count(),4} object(s): {string.Join(' ', group.Select(o => JsonIds.Format(o.Id)).Distinct().Take(8))}{(group.Select(o => o.Id).Distinct().Count() > 8 ? " ..." : "")}");
-        var probes = report.Compiled.Values.SelectMany(c => c.Probes).Concat(report.Cells.SelectMany(c => c.Probes)).ToArray();
+        var probes = report.Probes();
+        w.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  probes checked: {probes.Total} ({probes})"));
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  probes checked: {probes.Length} ({string.Join(", ", new[] { ProbeKind.Grid, ProbeKind.Doorway }.Concat(ProbeKinds.Stability).Select(k => $"{ChartProbes.Count(probes, k)} {ProbeKinds.Name(k)}"))})"));
-        w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  whole scene over {t.Positions} mover positions: all-retail {t.Retail.MedianNs:0.0} ns, compiled {t.Compiled.MedianNs:0.0} ns per position (median); compiled agrees on {t.Agree} ({t.AgreementPercent:0.000}%), {t.FalsePass} false pass, {t.FalseBlock} false block"));
+            $"  whole scene over {t.Positions} mover positions: all-retail {t.Retail.MedianNs:0.0} ns, compiled {t.Compiled.MedianNs:0.0} ns per position (median; {t.RetailOps:0.0} and {t.CompiledOps:0.0} counted operations); compiled agrees on {t.Agree} ({t.AgreementPercent:0.000}%), {t.FalsePass} false pass, {t.FalseBlock} false block"));
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wrote {files.Count} file(s) ({bytes} bytes, {CompiledSceneWriter.BspGfxObjs(report).Count} GfxObj and {report.Cells.Count(c => c.Bsp is not null)} cell BSP dump(s)) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
         return ExitCodes.Ok;

@@ -18,6 +18,17 @@ public sealed class SelectionOptions
     public Option<string?> Landblock { get; } = new("--landblock") { Description = "a landblock's scene (needs --cell-dat unless the sample is used)", HelpName = "0xXXYY" };
     public Option<string?> CellDat { get; } = new("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --landblock", HelpName = "PATH" };
 
+    /// <summary>--no-cells for the commands that read a landblock's indoor cells (chart, scene): objects only.</summary>
+    public static Option<bool> NoCells() => new("--no-cells") { Description = "with --landblock: objects only, no indoor cells" };
+
+    /// <summary>The selection without its landblock's cells when <paramref name="noCells"/>; refused without a landblock.</summary>
+    public static BatchSelection WithoutCells(BatchSelection selection, bool noCells)
+    {
+        if (!noCells) return selection;
+        if (selection.Landblock is null) throw new CliException(ExitCodes.Usage, "--no-cells applies to a landblock's scene: add --landblock 0xXXYY");
+        return selection with { Cells = false };
+    }
+
     public static Option<string?> Jobs() => new("--jobs") { Description = "parallel workers (default: all cores)", HelpName = "N" };
 
     public static int ParseJobs(string? text)

@@ -42,6 +42,35 @@ public class ChartCommandTests
         }
     }
 
+    [Fact]
+    public void A_landblock_chart_probes_its_indoor_cells_as_retail_and_no_cells_leaves_them_out()
+    {
+        using var dir = new TempDir();
+        var run = CliRun.Of("chart", "--landblock", "0xA9B4", "--spacing", "1", "--out", dir.Path, "--quiet");
+        Assert.True(run.ExitCode == 0, run.Error);
+        Assert.Contains("2 indoor cell(s) probed as retail", run.Out);
+        var rows = File.ReadAllLines(Path.Combine(dir.Path, AcShadow.Core.Chart.Output.CellsCsv.FileName));
+        Assert.Equal(AcShadow.Core.Chart.Output.CellsCsv.Header, rows[0]);
+        var header = rows[0].Split(',');
+        int Column(string name) => Array.IndexOf(header, name);
+        Assert.Equal(["0xA9B40100", "0xA9B40101"], rows.Skip(1).Select(r => r.Split(',')[0]));
+        foreach (var row in rows.Skip(1).Select(r => r.Split(',')))
+        {
+            // The walls are probed on both sides of where a mover starts touching them, and retail's tree answers.
+            Assert.Equal("retail", row[Column("model")]);
+            Assert.True(int.Parse(row[Column("face_probes")]) > 0, string.Join(',', row));
+            Assert.True(int.Parse(row[Column("blocked")]) > 0, string.Join(',', row));
+            Assert.True(int.Parse(row[Column("clear")]) > 0, string.Join(',', row));
+            Assert.Equal(int.Parse(row[Column("probes")]), int.Parse(row[Column("blocked")]) + int.Parse(row[Column("clear")]));
+        }
+
+        using var objectsOnly = new TempDir();
+        run = CliRun.Of("chart", "--landblock", "0xA9B4", "--no-cells", "--spacing", "1", "--out", objectsOnly.Path, "--quiet");
+        Assert.True(run.ExitCode == 0, run.Error);
+        Assert.DoesNotContain(AcShadow.Core.Chart.Output.CellsCsv.FileName, objectsOnly.Files());
+        Assert.DoesNotContain("indoor cell", run.Out);
+    }
+
     [Theory]
     [InlineData(2, "choose what to chart", "chart", "--out", "x")]
     [InlineData(2, "'0xZZ' is not a landblock", "chart", "--landblock", "0xZZ", "--out", "x")]
@@ -50,6 +79,7 @@ public class ChartCommandTests
     [InlineData(2, "--spacing: 'abc'", "chart", "--setup", "0x020019FF", "--spacing", "abc", "--out", "x")]
     [InlineData(2, "spacing must be at least 0.01 m", "chart", "--setup", "0x020019FF", "--spacing", "0.001", "--out", "x")]
     [InlineData(4, "Setup 0x0200ABCD is not in", "chart", "--setup", "0x0200ABCD", "--out", "x")]
+    [InlineData(2, "--no-cells applies to a landblock's scene", "chart", "--setup", "0x020019FF", "--no-cells", "--out", "x")]
     public void Usage_and_missing_setups_are_one_line_errors(int code, string message, params string[] args)
     {
         var run = CliRun.Of(args);

@@ -46,7 +46,7 @@ public class SceneCompileTests
         // The door keeps its BSP: a jamb with its threshold is neither a box nor a hull, and the evidence says so.
         Assert.Equal("retail", models[SampleSpecAuthor.DoorSetup]);
         var door = report.Compiled[(SceneObjectKind.Setup, SampleSpecAuthor.DoorSetup)];
-        Assert.Equal(ModelLadder.Names, door.Candidates.Select(c => c.Model));
+        Assert.Equal(ModelLadder.Names.Order(), door.Candidates.Select(c => c.Model).Order());
         Assert.All(door.Candidates.SkipLast(1), c => Assert.False(c.Accepted));
         Assert.True(door.Candidates.Single(c => c.Model == "part-hulls").FalseBlock > 0);
         foreach (var c in report.Compiled.Values)
@@ -55,6 +55,39 @@ public class SceneCompileTests
             Assert.Equal(0, c.FalseBlock);
             Assert.All(ProbeKinds.Stability, k => Assert.True(ChartProbes.Count(c.Probes, k) > 0));
         }
+    }
+
+    [Fact]
+    public void Models_are_tried_fewest_counted_operations_first_so_none_chosen_costs_more_than_retail()
+    {
+        var report = Exact.Value;
+        foreach (var c in report.Compiled.Values.Where(c => c.Candidates.Count > 0))
+        {
+            // Tried in order of counted cost; every one before the chosen model was refused.
+            Assert.Equal(c.Candidates.Select(k => k.OpsPerQuery).Order(), c.Candidates.Select(k => k.OpsPerQuery));
+            Assert.True(c.Candidates[^1].Accepted);
+            Assert.Equal(c.Model, c.Candidates[^1].Model);
+            Assert.All(c.Candidates.SkipLast(1), k => Assert.False(k.Accepted));
+            Assert.True(c.ChosenOps <= c.RetailOps, $"0x{c.Id:X8}: {c.Model} counts {c.ChosenOps}, retail {c.RetailOps}");
+        }
+        // The column's hull counts fewer operations than its tree; so does the scene that uses it.
+        var column = report.Compiled[(SceneObjectKind.GfxObj, SampleSpecAuthor.Column)];
+        Assert.True(column.ChosenOps < column.RetailOps);
+        Assert.True(report.Totals.CompiledOps < report.Totals.RetailOps, $"{report.Totals.CompiledOps} vs {report.Totals.RetailOps}");
+        // Counts, not timings: the same on every compile.
+        var again = Compile(new SceneCompileOptions());
+        Assert.Equal(report.Totals.RetailOps, again.Totals.RetailOps);
+        Assert.Equal(report.Compiled.Values.Select(c => c.ChosenOps), again.Compiled.Values.Select(c => c.ChosenOps));
+    }
+
+    [Fact]
+    public void Equal_counts_keep_ladder_order_and_a_model_counting_more_than_retail_comes_after_it()
+    {
+        // spheres, part-spheres, fallback-cylinder, part-boxes, part-hulls, retail
+        Assert.Equal([0, 1, 2, 3, 4, 5], ModelLadder.ByCost([1, 1, 2, 7, 21, 40]));
+        // A hull of many faces against a shallow tree: retail is tried (and, always qualifying, chosen) first.
+        Assert.Equal([1, 2, 3, 5, 0, 4], ModelLadder.ByCost([9, 1, 2, 7, 60, 8]));
+        Assert.Equal([0, 1, 5, 2, 3, 4], ModelLadder.ByCost([0, 1, 3, 3, 3, 2]));
     }
 
     [Fact]

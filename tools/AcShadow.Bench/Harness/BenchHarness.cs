@@ -18,6 +18,9 @@ public static class BenchHarness
     /// <summary>The scale dat's busy landblock (<see cref="AcShadow.Forge.ScaleSpecGenerator.BusyLandblockObjects"/> objects).</summary>
     public const string BusyLandblock = "0x0000";
 
+    /// <summary>The built-in sample's landblock, compiled once for its scene chart.</summary>
+    public const string SampleLandblock = "0xA9B4";
+
     public static BenchReport Run(HarnessOptions options, TextWriter log)
     {
         var started = DateTime.UtcNow;
@@ -30,6 +33,7 @@ public static class BenchHarness
 
         var timings = new List<Timing>();
         var checks = new List<Check>();
+        var extraRatios = new List<Ratio>();
         try
         {
             foreach (var (size, dat) in new[] { ("quarter", quarter), ("full", full) })
@@ -102,6 +106,22 @@ public static class BenchHarness
                 _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["chart", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet", .. probes]); }));
             timings.Add(Measure(log, options, "scene --landblock", "full", 1, "disk", $"acshadow scene --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
                 _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["scene", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet", .. probes]); }));
+            // What compiling saves: the last run's scene chart, the whole landblock asked per mover position.
+            var sceneTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
+            extraRatios.AddRange(sceneTotals.Ratios(BusyLandblock));
+            log.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"scene {BusyLandblock} per mover position: all-retail {sceneTotals.RetailNs:0.0} ns ({sceneTotals.RetailOps:0.0} counted operations), compiled {sceneTotals.CompiledNs:0.0} ns ({sceneTotals.CompiledOps:0.0})"));
+            // The same on the built-in sample (one run: what is measured is inside it).
+            Reset(landblockOut);
+            var sample = ProcessRunner.Run(options.Cli, ["scene", "--landblock", SampleLandblock, "--out", landblockOut, "--quiet", .. probes]);
+            if (File.Exists(Path.Combine(landblockOut, "scene-chart.csv")))
+            {
+                var sampleTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
+                extraRatios.AddRange(sampleTotals.Ratios($"{SampleLandblock} (sample)"));
+                log.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                    $"scene {SampleLandblock} (sample) per mover position: all-retail {sampleTotals.RetailNs:0.0} ns ({sampleTotals.RetailOps:0.0} counted operations), compiled {sampleTotals.CompiledNs:0.0} ns ({sampleTotals.CompiledOps:0.0})"));
+            }
+            else checks.Add(new Check($"scene --landblock {SampleLandblock} on the built-in sample runs", [sample.Stderr.Trim()]));
             Reset(landblockOut);
 
             // A landblock's scene with and without its interiors: the landblock with the most cells.
@@ -128,7 +148,7 @@ public static class BenchHarness
         checks.Add(new Check("collision reference and brute force give the same answers",
             collision.Disagreements == 0 ? [] : [$"{collision.Disagreements} of {collision.Queries} queries disagree"]));
 
-        var report = BenchReport.Build(options, machine, started, DateTime.UtcNow, full, quarter, timings, collision, checks);
+        var report = BenchReport.Build(options, machine, started, DateTime.UtcNow, full, quarter, timings, collision, checks, extraRatios);
         report.Write(options.Output);
         report.PrintTable(log);
         log.WriteLine($"wrote {options.Output}");

@@ -27,7 +27,7 @@ public sealed record BenchReport(
     public const double MemoryLimitMiB = 400;
 
     public static BenchReport Build(HarnessOptions options, MachineInfo machine, DateTime started, DateTime finished, CachedDat full, CachedDat quarter,
-        IReadOnlyList<Timing> timings, CollisionResult collision, IReadOnlyList<Check> checks)
+        IReadOnlyList<Timing> timings, CollisionResult collision, IReadOnlyList<Check> checks, IReadOnlyList<Ratio>? measured = null)
     {
         var cores = timings.Where(t => t.Name == "batch").Max(t => t.Jobs);
         Timing Get(string name, string size, int jobs, string output = "disk") =>
@@ -64,6 +64,7 @@ public sealed record BenchReport(
             new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
                 $"per-query speed-up of the collision reference on GfxObjs of {CollisionComparison.MinPolygons}+ polygons"),
         ]);
+        ratios.AddRange(measured ?? []);
         return new BenchReport(options, machine, started, finished, full, quarter, timings, collision, checks, ratios);
     }
 

@@ -21,15 +21,16 @@ public static class ChartFiles
     /// <summary>
     /// The files a run over these objects writes, each with the start of its content (its header row or
     /// root element): for checking, before any object is charted, that no file acshadow does not own would
-    /// be replaced.
+    /// be replaced. <paramref name="cells"/>: a landblock's indoor cells are charted too (cells.csv).
     /// </summary>
-    public static IEnumerable<ChartFile> Heads(IEnumerable<uint> objectIds)
+    public static IEnumerable<ChartFile> Heads(IEnumerable<uint> objectIds, bool cells = false)
     {
         var svg = new UTF8Encoding(false).GetBytes(new SvgDocument(1, 1).Render());
         yield return Utf8("chart.csv", ChartCsv.Header + "\n");
         yield return Utf8("summary.csv", SummaryCsv.Header + "\n");
         yield return Utf8("failures.csv", FailuresCsv.Header + "\n");
         yield return new ChartFile("speed-accuracy.svg", svg);
+        if (cells) yield return Utf8(CellsCsv.FileName, CellsCsv.Header + "\n");
         foreach (var id in objectIds) yield return new ChartFile(FailureMapSvg.FileName(id), svg);
     }
 

@@ -11,7 +11,8 @@ namespace AcShadow.Core.Scenes.Compile;
 /// <summary>
 /// compiled-scene.json: per placed object its chosen model, the shapes that model tests (part-space
 /// geometry with the part's pose, so a reader answers with the same floats) and the evidence. Every
-/// field but <c>evidence.medianNsPerQuery</c> and <c>timing</c> is the same bytes on every run.
+/// field but <c>evidence.medianNsPerQuery</c> and <c>timing</c> is the same bytes on every run (the
+/// counted costs, <c>opsPerQuery</c> and <c>…OpsPerPosition</c>, included).
 /// </summary>
 public static class CompiledSceneWriter
 {
@@ -50,7 +51,9 @@ public static class CompiledSceneWriter
                 .Add("positions", totals.Positions)
                 .Add("agree", totals.Agree)
                 .Add("falsePass", totals.FalsePass)
-                .Add("falseBlock", totals.FalseBlock))
+                .Add("falseBlock", totals.FalseBlock)
+                .Add("retailOpsPerPosition", Ops(totals.RetailOps))
+                .Add("compiledOpsPerPosition", Ops(totals.CompiledOps)))
             .Add("timing", new JsonObj()
                 .Add("retailMedianNsPerPosition", JsonNum.Of(totals.Retail.MedianNs))
                 .Add("compiledMedianNsPerPosition", JsonNum.Of(totals.Compiled.MedianNs)))
@@ -65,6 +68,9 @@ public static class CompiledSceneWriter
             .Where(c => c.Chosen is not null)
             .SelectMany(c => c.Chosen!.Shapes.Where(s => s.Bsp is not null).Select(s => s.Bsp!.GfxObjId))
             .Distinct().Order().ToArray();
+
+    /// <summary>A counted cost, to 3 decimals: an average of integers, the same bytes on every run.</summary>
+    private static JsonNode Ops(double ops) => JsonNum.Of(Math.Round(ops, 3));
 
     private static JsonObj Counts(SortedDictionary<string, int> counts)
     {
@@ -117,9 +123,9 @@ public static class CompiledSceneWriter
         if (c?.Chosen is { } chosen)
             foreach (var s in chosen.Shapes) shapes.Add(ShapeJson(s));
         json.Add("shapes", shapes);
-        if (c is not null && !c.Bounds.IsEmpty)
+        if (c?.Chosen is { } model && ShapeBounds.Of(model.Shapes) is { IsEmpty: false } bounds)
         {
-            var (center, radius) = SceneCompiler.Bound(c.Bounds);
+            var (center, radius) = SceneCompiler.Bound(bounds);
             json.Add("bound", new JsonObj().Add("center", center).Add("radius", radius));
         }
         else json.Add("bound", JsonNull.Value);
@@ -137,9 +143,11 @@ public static class CompiledSceneWriter
         return new JsonObj()
             .Add("probes", probes)
             .Add("candidates", JsonArr.Of(c.Candidates, k => new JsonObj()
-                .Add("model", k.Model).Add("shapes", k.Shapes).Add("falsePass", k.FalsePass).Add("falseBlock", k.FalseBlock).Add("accepted", k.Accepted)))
+                .Add("model", k.Model).Add("shapes", k.Shapes).Add("opsPerQuery", Ops(k.OpsPerQuery))
+                .Add("falsePass", k.FalsePass).Add("falseBlock", k.FalseBlock).Add("accepted", k.Accepted)))
             .Add("falsePass", c.FalsePass)
             .Add("falseBlock", c.FalseBlock)
+            .Add("opsPerQuery", new JsonObj().Add("chosen", Ops(c.ChosenOps)).Add("retail", Ops(c.RetailOps)))
             .Add("medianNsPerQuery", new JsonObj().Add("chosen", JsonNum.Of(c.ChosenTiming.MedianNs)).Add("retail", JsonNum.Of(c.RetailTiming.MedianNs)));
     }
 

@@ -6,13 +6,16 @@ using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes.Compile;
 
-/// <summary>One model the compiler tried on an object, in ladder order, and whether it qualified.</summary>
-public sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, int FalseBlock, bool Accepted);
+/// <summary>
+/// One model the compiler tried on an object, in the order tried (fewest counted operations per query
+/// first, <see cref="QueryCost"/>), and whether it qualified.
+/// </summary>
+public sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, int FalseBlock, bool Accepted, double OpsPerQuery);
 
 /// <summary>
 /// One distinct object of a scene (a Setup or a bare GfxObj, every placement of it shares this) compiled:
 /// the chosen model prepared, retail prepared, the probes and retail's answers, every candidate tried, and
-/// the time per query of the chosen model and of retail over the probes. <see cref="Model"/> is null when
+/// the time per query of the chosen model and of retail over the probes, and their counted cost. <see cref="Model"/> is null when
 /// the object could not be described (see the diagnostics); "none" when nothing of it collides.
 /// </summary>
 public sealed record ObjectCompilation(
@@ -31,6 +34,10 @@ public sealed record ObjectCompilation(
     IReadOnlyList<Diagnostic> Diagnostics)
 {
     public const string Nothing = "none";
+
+    /// <summary>Counted operations per query (<see cref="QueryCost"/>) of the chosen model and of retail over the probes' sample.</summary>
+    public double ChosenOps { get; init; }
+    public double RetailOps { get; init; }
 
     public int FalsePass => Candidates.Count == 0 ? 0 : Candidates[^1].FalsePass;
     public int FalseBlock => Candidates.Count == 0 ? 0 : Candidates[^1].FalseBlock;

@@ -91,24 +91,30 @@ public static class SceneCompiler
         return Compile(subject, kind, options, timer);
     }
 
-    /// <summary>One object: the ladder on its probes, the chosen model and retail timed.</summary>
+    /// <summary>
+    /// One object: every model of the ladder counted on the probes (<see cref="QueryCost"/>), then tried
+    /// cheapest count first (ladder order among equal counts) until one qualifies; the chosen model and
+    /// retail timed. Retail always qualifies, so a model that counts more than retail is never tried.
+    /// </summary>
     public static ObjectCompilation Compile(ChartSubject subject, SceneObjectKind kind, SceneCompileOptions options, IQueryTimer timer)
     {
         var chart = options.Chart;
         var ladder = ModelLadder.Models;
         var prepared = ladder.Select(m => ChartRunner.Prepare(m, subject)).ToArray();
-        var retail = prepared[^1];
+        var retailIndex = prepared.Length - 1;
+        var retail = prepared[retailIndex];
         if (retail.Shapes.Count == 0)
             return Unresolved(kind, subject.Setup.Id, ObjectCompilation.Nothing, retail.Diagnostics) with { Retail = retail };
         var laid = ChartProbes.Lay(retail, prepared, chart);
         var probes = laid.Probes;
         var expected = ChartRunner.Answers(retail, probes);
+        var costs = prepared.Select(m => QueryCost.PerQuery(m.Shapes, probes, chart.TimingProbes)).ToArray();
         var candidates = new List<CandidateOutcome>();
-        var chosen = prepared.Length - 1;
+        var chosen = retailIndex;
         var chosenAnswers = expected;
-        for (var m = 0; m < prepared.Length; m++)
+        foreach (var m in ModelLadder.ByCost(costs))
         {
-            var answers = m == prepared.Length - 1 ? expected : ChartRunner.Answers(prepared[m], probes);
+            var answers = m == retailIndex ? expected : ChartRunner.Answers(prepared[m], probes);
             int falsePass = 0, falseBlock = 0;
             for (var i = 0; i < probes.Length; i++)
             {
@@ -117,22 +123,31 @@ public static class SceneCompiler
             }
             // A model with no shapes for an object that has some is no model of it.
             var accepted = prepared[m].Shapes.Count > 0 && options.Accepts(falsePass, falseBlock, probes.Length);
-            candidates.Add(new CandidateOutcome(ladder[m].Name, prepared[m].Shapes.Count, falsePass, falseBlock, accepted));
+            candidates.Add(new CandidateOutcome(ladder[m].Name, prepared[m].Shapes.Count, falsePass, falseBlock, accepted, costs[m]));
             if (!accepted) continue;
             chosen = m;
             chosenAnswers = answers;
             break;
         }
         var retailTiming = timer.Measure(ModelLadder.Retail, retail, probes, chart);
-        var chosenTiming = chosen == prepared.Length - 1 ? retailTiming : timer.Measure(ladder[chosen].Name, prepared[chosen], probes, chart);
+        var chosenTiming = chosen == retailIndex ? retailTiming : timer.Measure(ladder[chosen].Name, prepared[chosen], probes, chart);
         return new ObjectCompilation(subject.Setup.Id, kind, ladder[chosen].Name, prepared[chosen], retail, probes, expected, chosenAnswers,
-            candidates, chosenTiming, retailTiming, laid.Bounds, [.. retail.Diagnostics, .. chosen == prepared.Length - 1 ? [] : prepared[chosen].Diagnostics]);
+            candidates, chosenTiming, retailTiming, laid.Bounds, [.. retail.Diagnostics, .. chosen == retailIndex ? [] : prepared[chosen].Diagnostics])
+        {
+            ChosenOps = costs[chosen],
+            RetailOps = costs[retailIndex],
+        };
     }
 
     private static ObjectCompilation Unresolved(SceneObjectKind kind, uint id, string? model, IReadOnlyList<Diagnostic> diagnostics) =>
         new(id, kind, model, null, null, [], [], [], [], TimingStats.Of([]), TimingStats.Of([]), Bounds.Empty, diagnostics);
 
-    /// <summary>The scene asked as a whole at every placed object's and every cell's probes, all-retail against compiled.</summary>
+    /// <summary>
+    /// The scene asked as a whole at every placed object's and every cell's probes, all-retail against
+    /// compiled: agreement, counted operations per position (<see cref="SceneCost"/>), and time per
+    /// position, the two timed in the order retail, compiled, compiled, retail with their batches pooled,
+    /// so a machine that speeds up or slows down during the measurement weighs on both alike.
+    /// </summary>
     private static SceneTotals Totals(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, SceneCompileOptions options, IQueryTimer timer)
     {
@@ -156,32 +171,54 @@ public static class SceneCompiler
             else if (expected) falsePass++;
             else falseBlock++;
         }
-        var retailTiming = timer.Measure("scene: every object retail", new PreparedModel(retail, [], []), positions, options.Chart);
-        var compiledTiming = timer.Measure("scene: compiled", new PreparedModel(chosen, [], []), positions, options.Chart);
+        var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes);
+        var retailModel = new PreparedModel(retail, [], []);
+        var compiledModel = new PreparedModel(chosen, [], []);
+        const string RetailName = "scene: every object retail", CompiledName = "scene: compiled";
+        var r1 = timer.Measure(RetailName, retailModel, positions, options.Chart);
+        var c1 = timer.Measure(CompiledName, compiledModel, positions, options.Chart);
+        var c2 = timer.Measure(CompiledName, compiledModel, positions, options.Chart);
+        var r2 = timer.Measure(RetailName, retailModel, positions, options.Chart);
+        var retailTiming = TimingStats.Of([.. r1.BatchNs, .. r2.BatchNs]);
+        var compiledTiming = TimingStats.Of([.. c1.BatchNs, .. c2.BatchNs]);
         var cellShapes = cells.Count(c => c.Bsp is not null);
         int Shapes(Func<ObjectCompilation, PreparedModel?> pick) => cellShapes +
             placed.Sum(p => compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is { } c && pick(c) is { } m ? m.Shapes.Count : 0);
-        return new SceneTotals(positions.Count, agree, falsePass, falseBlock, retailTiming, compiledTiming, Shapes(c => c.Retail), Shapes(c => c.Chosen));
+        return new SceneTotals(positions.Count, agree, falsePass, falseBlock, retailTiming, compiledTiming, Shapes(c => c.Retail), Shapes(c => c.Chosen))
+        {
+            RetailOps = retailOps,
+            CompiledOps = compiledOps,
+        };
     }
 
     /// <summary>
     /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
-    /// gives, and every cell by its retail tree (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
+    /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
+    /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
     /// </summary>
     public static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
     {
         var objects = new List<PlacedQuery>();
-        foreach (var p in placed)
-        {
-            var o = p.Object;
-            if (compiled.GetValueOrDefault((o.Kind, o.Id)) is not { } c || pick(c) is not { } model || c.Bounds.IsEmpty) continue;
-            var (center, radius) = Bound(c.Bounds);
-            objects.Add(new PlacedQuery(o.Index, o.Id, o.Frame.Origin, o.Frame.Orientation, model.Query, center, radius));
-        }
+        foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
+            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Origin, p.Object.Frame.Orientation, model.Query, center, radius));
         var cellQueries = cells.Where(c => c.Bsp is not null)
             .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Origin, c.Cell.Position.Orientation))).ToArray();
         return new SceneQuery(objects, cellQueries);
+    }
+
+    /// <summary>The placed objects a scene asks, in order, each with the picked model and the entity-space sphere around its shapes.</summary>
+    internal static IEnumerable<(PlacedObject Placed, PreparedModel Model, Vector3 Center, float Radius)> Placements(IReadOnlyList<PlacedObject> placed,
+        IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled, Func<ObjectCompilation, PreparedModel?> pick)
+    {
+        foreach (var p in placed)
+        {
+            var o = p.Object;
+            if (compiled.GetValueOrDefault((o.Kind, o.Id)) is not { } c || pick(c) is not { } model || ShapeBounds.Of(model.Shapes) is var bounds && bounds.IsEmpty) continue;
+            var (center, radius) = Bound(bounds);
+            yield return (p, model, center, radius);
+        }
     }
 
     /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
