@@ -135,6 +135,7 @@ public static class ChartCommand
                     tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
                     {
                         DiagnosticPrinter.Print(console.Error, JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics);
+                        foreach (var note in chart.Notes) console.Error.WriteLine($"warning: {JsonIds.Format(chart.SetupId)}: {note}");
                         chartRows.Write(ChartCsv.Rows(chart));
                         failureRows.Write(FailuresCsv.Rows(chart));
                         // The previous run's tables describe other maps: they go before the first map is

@@ -20,7 +20,11 @@ public sealed record ChartProbes(Probe[] Probes, float GridSpacing, Bounds Bound
         var probes = grid.Probes.Concat(DoorwayProbes.Build(opening, options)).Concat(StabilityProbes.Build(surfaces, options)).ToArray();
         var notes = new List<string>();
         if (grid.Spacing != options.Spacing)
-            notes.Add(FormattableString.Invariant($"grid coarsened from {options.Spacing} m to {grid.Spacing} m to stay under {options.MaxGridProbes} probes"));
+        {
+            // Said with the size that forced it: a span of 1e38 m is a corrupt sphere or vertex, not a big object.
+            var size = grid.Region.Size;
+            notes.Add(FormattableString.Invariant($"grid-coarsened: grid coarsened from {options.Spacing} m to {grid.Spacing:G6} m to stay under {options.MaxGridProbes} probes: the shapes span {size.X:G6} × {size.Y:G6} × {size.Z:G6} m"));
+        }
         return new ChartProbes(probes, grid.Spacing, everything, opening, notes);
     }
 
