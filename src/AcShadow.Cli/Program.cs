@@ -1,6 +1,12 @@
 using AcShadow.Cli;
 using AcShadow.Cli.Infrastructure;
 
+// Before any assembly beyond CoreLib is needed: with too few descriptors, later steps fail unpredictably.
+if (DescriptorLimit.Problem() is { } tooFew)
+{
+    RawStandardError.WriteLine(tooFew);
+    return ExitCodes.InternalError;
+}
 try
 {
     FileSizeSignal.Handle();

@@ -12,7 +12,7 @@ namespace AcShadow.Fixtures;
 /// </summary>
 public sealed record FixtureIndex(ShapePolicy Policy, float EntityScale, IReadOnlyList<IndexedFile> Files)
 {
-    public IEnumerable<IndexedFile> OfKind(string kind) => Files.Where(f => f.Kind == kind);
+    public IEnumerable<IndexedFile> OfKind(FixtureKind kind) => Files.Where(f => f.Kind == kind);
 
     public static FixtureIndex Read(string json)
     {
@@ -23,7 +23,10 @@ public sealed record FixtureIndex(ShapePolicy Policy, float EntityScale, IReadOn
         var policyText = BspFileReader.Str(inputs, "policy");
         if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"inputs.policy \"{policyText}\" is not retail or union");
         var files = BspFileReader.Arr(root, "files").Select(f => new IndexedFile(
-            BspFileReader.Str(f, "path"), BspFileReader.Str(f, "kind"), BspFileReader.Str(f, "id"), BspFileReader.Str(f, "sha256"))).ToArray();
+            BspFileReader.Str(f, "path"), Kind(BspFileReader.Str(f, "kind")), BspFileReader.Str(f, "id"), BspFileReader.Str(f, "sha256"))).ToArray();
         return new FixtureIndex(policy, BspFileReader.Float(inputs, "entityScale"), files);
     }
+
+    private static FixtureKind Kind(string name) =>
+        FixtureKinds.TryParse(name, out var kind) ? kind : throw new FormatException($"files: kind \"{name}\" is not a kind of file acshadow writes");
 }

@@ -1,28 +1,16 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
-
-/// <summary>One object scene.json places: what it is, where it stands in the world, and the file that describes it.</summary>
-/// <param name="Index">Its position in the landblock's placement list.</param>
-/// <param name="Id">The Setup (0x02…) or GfxObj (0x01…) id it places.</param>
-/// <param name="Kind">"setup", "gfxObj" or "other".</param>
-/// <param name="WorldPosition">Its origin in world coordinates (metres).</param>
-/// <param name="WorldRotation">Its orientation in the world.</param>
-/// <param name="File">Output-relative path of its shadow file (setup) or BSP dump (gfxObj); null when unresolved or drawing-only.</param>
-/// <param name="Shapes">A bare GfxObj's one BSP shape (empty for setups, whose shapes are in their shadow file).</param>
-public sealed record ScenePlacement(int Index, uint Id, string Kind, Vector3 WorldPosition, Quaternion WorldRotation, string? File, IReadOnlyList<ShadowShape> Shapes);
-
-/// <summary>One indoor cell scene.json lists: its id and its cell file (null when it could not be described).</summary>
-public sealed record SceneCell(uint Id, string? File);
 
 /// <summary>scene.json read back: a landblock's placed objects in world frames, and its indoor cells.</summary>
 public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePolicy Policy, float EntityScale, IReadOnlyList<ScenePlacement> Objects)
 {
     /// <summary>The landblock's EnvCells (empty when the batch ran with --no-cells or the landblock has none).</summary>
-    public IReadOnlyList<SceneCell> Cells { get; init; } = [];
+    public IReadOnlyList<SceneCellFile> Cells { get; init; } = [];
 
     public static FixtureScene Read(string json)
     {
@@ -36,7 +24,7 @@ public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePo
             var frame = BspFileReader.Prop(o, "worldFrame");
             var file = BspFileReader.Prop(o, "file");
             var shapes = o.TryGetProperty("shapes", out var s) ? s.EnumerateArray().Select(ShadowFileReader.ReadShape).ToArray() : [];
-            return new ScenePlacement(BspFileReader.Int(o, "index"), Id(o, "id"), BspFileReader.Str(o, "kind"),
+            return new ScenePlacement(BspFileReader.Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(BspFileReader.Str(o, "kind")),
                 BspFileReader.Vec(BspFileReader.Prop(frame, "origin")), BspFileReader.Quat(BspFileReader.Prop(frame, "orientation")),
                 file.ValueKind == JsonValueKind.Null ? null : file.GetString(), shapes);
         }).ToArray();
@@ -44,7 +32,7 @@ public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePo
             ? c.EnumerateArray().Select(e =>
             {
                 var file = BspFileReader.Prop(e, "file");
-                return new SceneCell(Id(e, "id"), file.ValueKind == JsonValueKind.Null ? null : file.GetString());
+                return new SceneCellFile(Id(e, "id"), file.ValueKind == JsonValueKind.Null ? null : file.GetString());
             }).ToArray()
             : [];
         return new FixtureScene(Id(root, "landblockId"), BspFileReader.Vec(BspFileReader.Prop(root, "worldOrigin")), policy,

@@ -1,4 +1,5 @@
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
@@ -72,7 +73,7 @@ public sealed class FixtureSet
         var scale = Scene?.EntityScale ?? Index?.EntityScale ?? 1f;
         return cell.File.Objects.Where(o => o.File is not null).Select(o =>
         {
-            var fixture = o.Kind == "setup" ? Setup(o.Id) : BareGfxObj(o.Id, o.File!, o.Shapes, policy, scale);
+            var fixture = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : BareGfxObj(o.Id, o.File!, o.Shapes, policy, scale);
             return fixture.PlaceAt(o.LandblockPosition, o.Rotation);
         }).ToArray();
     }
@@ -84,7 +85,7 @@ public sealed class FixtureSet
         var placed = new List<PlacedFixture>();
         foreach (var o in scene.Objects.Where(o => o.File is not null))
         {
-            var fixture = o.Kind == "setup" ? Setup(o.Id) : GfxObj(scene, o);
+            var fixture = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : GfxObj(scene, o);
             placed.Add(fixture.PlaceAt(o.WorldPosition, o.WorldRotation));
         }
         return placed;

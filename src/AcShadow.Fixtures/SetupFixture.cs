@@ -15,7 +15,8 @@ public sealed class SetupFixture
 {
     private readonly ObjectOverlapQuery _query;
 
-    public ShadowShapeSet Shapes { get; }
+    /// <summary>The shadow file: the Setup's shapes, how it was posed, and what was said about it.</summary>
+    public ShadowShapeSet Shadow { get; }
 
     /// <summary>The BSP dumps the shapes use, by GfxObj id.</summary>
     public IReadOnlyDictionary<uint, BspDump> Bsps { get; }
@@ -25,7 +26,7 @@ public sealed class SetupFixture
 
     private SetupFixture(ShadowShapeSet shapes, IReadOnlyDictionary<uint, BspDump> bsps)
     {
-        Shapes = shapes;
+        Shadow = shapes;
         Bsps = bsps;
         var compiled = bsps.ToDictionary(p => p.Key, p => CompiledBsp.Compile(p.Value));
         _query = ObjectOverlapQuery.Create(shapes, id => compiled.GetValueOrDefault(id));

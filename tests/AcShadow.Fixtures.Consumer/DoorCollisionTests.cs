@@ -40,7 +40,7 @@ public class DoorCollisionTests
     public void The_door_is_made_of_its_parts_physics_bsps()
     {
         var door = Fixtures.Setup(Door);
-        Assert.Equal(3, door.Shapes.Shapes.Count);
+        Assert.Equal(3, door.Shadow.Shapes.Count);
         Assert.Equal([0x010044B5u, 0x010044B6u], door.Bsps.Keys.Order());
         Assert.Empty(door.Diagnostics);
     }

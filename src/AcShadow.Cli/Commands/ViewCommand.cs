@@ -16,6 +16,7 @@ using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Cli.Commands;
 
@@ -175,7 +176,7 @@ public static class ViewCommand
             var placements = new List<ViewPlacement>();
             foreach (var o in scene.Objects.Where(o => o.File is not null))
             {
-                var subject = o.Kind == "setup" ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, PolicyName(text), o.Shapes, Dump);
+                var subject = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, PolicyName(text), o.Shapes, Dump);
                 placements.Add(new ViewPlacement(o.Index, subject, frames[o.Index]));
             }
             scenes.Add(ViewSceneBuilder.ForLandblock(scene.LandblockId, scene.WorldOrigin, placements, failures,

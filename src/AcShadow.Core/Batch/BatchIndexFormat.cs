@@ -1,4 +1,5 @@
 using AcShadow.Core.Export;
+using AcShadow.Fixtures.Batch;
 
 namespace AcShadow.Core.Batch;
 
@@ -6,15 +7,4 @@ namespace AcShadow.Core.Batch;
 public static class BatchIndexFormat
 {
     public const string Format = AcShadow.Fixtures.FileFormats.Index;
-
-    public static string KindName(OutputKind kind) => kind switch
-    {
-        OutputKind.Shadow => "shadow",
-        OutputKind.Bsp => "bsp",
-        OutputKind.Scene => "scene",
-        OutputKind.AcdreamGfxObj => "acdream",
-        OutputKind.Cell => "cell",
-        OutputKind.AcdreamCell => "acdream-cell",
-        _ => throw new ArgumentOutOfRangeException(nameof(kind)),
-    };
 }

@@ -65,7 +65,9 @@ public static class BatchIndexReader
         var list = files.EnumerateArray().Select((f, i) =>
         {
             var at = $"$.files[{i}]";
-            return new IndexedFile(Str(f, "path", at), Str(f, "kind", at), Str(f, "id", at), Str(f, "sha256", at));
+            var kind = Str(f, "kind", at);
+            return new IndexedFile(Str(f, "path", at), FixtureKinds.TryParse(kind, out var k) ? k : throw new FormatException($"{at}.kind \"{kind}\" is not a kind of file acshadow writes"),
+                Str(f, "id", at), Str(f, "sha256", at));
         }).ToArray();
         return new BatchIndex(result, list);
     }

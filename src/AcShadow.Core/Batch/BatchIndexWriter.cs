@@ -1,3 +1,4 @@
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
@@ -46,7 +47,7 @@ public static class BatchIndexWriter
             if (t.Length >= ChunkBytes) t.MoveTo(destination);
             var f = files[i];
             t.Raw("    {\n      \"path\": ").String(f.RelativePath)
-                .Raw(",\n      \"kind\": ").String(BatchIndexFormat.KindName(f.Kind))
+                .Raw(",\n      \"kind\": ").String(FixtureKinds.Name(f.Kind))
                 .Raw(",\n      \"id\": ").String(JsonIds.Format(f.Id))
                 .Raw(",\n      \"shapes\": ").Int(f.ShapeCount)
                 .Raw(",\n      \"polygons\": ").Int(f.PolygonCount)
@@ -68,9 +69,9 @@ public static class BatchIndexWriter
         .Add("inputs", Inputs(inputs))
         .Add("summary", new JsonObj()
             .Add("files", files.Count)
-            .Add("setups", files.Count(f => f.Kind == OutputKind.Shadow))
-            .Add("bspDumps", files.Count(f => f.Kind == OutputKind.Bsp))
-            .Add("scenes", files.Count(f => f.Kind == OutputKind.Scene))
+            .Add("setups", files.Count(f => f.Kind == FixtureKind.Shadow))
+            .Add("bspDumps", files.Count(f => f.Kind == FixtureKind.Bsp))
+            .Add("scenes", files.Count(f => f.Kind == FixtureKind.Scene))
             .Add("skipped", skipped.Count)
             .Add("bytes", files.Sum(f => f.Bytes)))
         .Add("skipped", JsonArr.Of(skipped, s => new JsonObj()
@@ -111,7 +112,7 @@ public static class BatchIndexWriter
     /// <summary>One file's entry, as index.json and incremental.json both record it.</summary>
     internal static JsonNode File(FileEntry f) => new JsonObj()
         .Add("path", f.RelativePath)
-        .Add("kind", BatchIndexFormat.KindName(f.Kind))
+        .Add("kind", FixtureKinds.Name(f.Kind))
         .Add("id", JsonIds.Format(f.Id))
         .Add("shapes", f.ShapeCount)
         .Add("polygons", f.PolygonCount)

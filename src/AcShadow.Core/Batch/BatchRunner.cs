@@ -5,6 +5,7 @@ using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
@@ -108,8 +109,8 @@ public static class BatchRunner
         var sortedSkipped = skipped.OrderBy(s => s.Id).ToArray();
         var state = new IncrementalState(IncrementalState.ToolKey(options, inputs.Formats), records);
         return new BatchSummary(ordered, inputs, sortedSkipped, records.Count,
-            ordered.Where(f => f.Kind is OutputKind.Bsp or OutputKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
-            ordered.Count(f => f.Kind == OutputKind.Scene), new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
+            ordered.Where(f => f.Kind is FixtureKind.Bsp or FixtureKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
+            ordered.Count(f => f.Kind == FixtureKind.Scene), new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
     }
 
     /// <summary>A Setup that cannot be decoded is skipped with the reason; other Setups go on.</summary>

@@ -1,4 +1,5 @@
 using AcShadow.Core.Export;
+using AcShadow.Fixtures.Batch;
 
 namespace AcShadow.Core.Batch;
 
@@ -19,7 +20,7 @@ public sealed record BatchSummary(
     IncrementalState State)
 {
     /// <summary>Cell files written (a landblock's indoor cells).</summary>
-    public int Cells => Files.Count(f => f.Kind == OutputKind.Cell);
+    public int Cells => Files.Count(f => f.Kind == FixtureKind.Cell);
 
     /// <summary>index.json, streamed: on a retail dat it is megabytes, written at the end of the run.</summary>
     public void WriteIndex(Stream destination) => BatchIndexWriter.Write(destination, Inputs, Files, Skipped);

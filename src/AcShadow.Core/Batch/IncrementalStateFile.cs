@@ -1,6 +1,7 @@
 using System.Text.Json;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
@@ -53,7 +54,7 @@ public static class IncrementalStateFile
     private static uint Id(JsonElement e) =>
         JsonIds.TryParse(e.GetString(), out var id) ? id : throw new FormatException($"not an id: {e}");
 
-    private static OutputKind Kind(string? name) =>
-        Enum.GetValues<OutputKind>().Where(k => BatchIndexFormat.KindName(k) == name).Select(k => (OutputKind?)k).FirstOrDefault()
+    private static FixtureKind Kind(string? name) =>
+        Enum.GetValues<FixtureKind>().Where(k => FixtureKinds.Name(k) == name).Select(k => (FixtureKind?)k).FirstOrDefault()
         ?? throw new FormatException($"not a file kind: {name}");
 }

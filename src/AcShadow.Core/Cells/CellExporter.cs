@@ -4,6 +4,7 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Cells;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
@@ -88,7 +89,7 @@ public sealed class CellExporter(ExportEngine engine)
             .Add("visibleCells", JsonArr.Of(cell.VisibleCells.Select(v => JsonIds.Format(cell.Sibling(v)))))
             .Add("objects", objects)
             .Add("diagnostics", JsonArr.Of(diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
-        var file = new OutputFile(CellFileFormat.PathFor(cell.Id), OutputKind.Cell, cell.Id, CanonicalJsonWriter.WriteUtf8(json), cell.StaticObjects.Count, physics.Polygons.Count);
+        var file = new OutputFile(CellFileFormat.PathFor(cell.Id), FixtureKind.Cell, cell.Id, CanonicalJsonWriter.WriteUtf8(json), cell.StaticObjects.Count, physics.Polygons.Count);
         return new CellExport(cell.Id, file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
             bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray(), diagnostics, cell.StaticObjects.Count);
     }

@@ -1,3 +1,4 @@
+using System.Collections.Immutable;
 using System.Numerics;
 using AcShadow.Fixtures.Collision;
 
@@ -49,8 +50,8 @@ public static class StabilityProbes
     /// <summary>How many probes <see cref="Add"/> would place for one surface with the spacing multiplied by <paramref name="factor"/>.</summary>
     private static long Count(PreparedShape shape, ChartOptions options, float factor)
     {
-        CompiledPolygon[] polygons = [];
-        CompiledBspNode[] nodes = [];
+        ImmutableArray<CompiledPolygon> polygons = [];
+        ImmutableArray<CompiledBspNode> nodes = [];
         if (shape.Polytope is { } solid) polygons = [.. solid.Faces];
         else if (shape.Bsp is { } bsp) (polygons, nodes) = (bsp.Polygons, bsp.Nodes);
         var step = options.Spacing * factor / shape.Pose.Scale;
@@ -76,7 +77,7 @@ public static class StabilityProbes
         return probes;
     }
 
-    private static void Add(List<Probe> probes, PartPose pose, CompiledPolygon[] polygons, CompiledBspNode[] nodes, ChartOptions options, float factor)
+    private static void Add(List<Probe> probes, PartPose pose, ImmutableArray<CompiledPolygon> polygons, ImmutableArray<CompiledBspNode> nodes, ChartOptions options, float factor)
     {
         var delta = options.StabilityOffset / pose.Scale;
         var step = options.Spacing * factor / pose.Scale;
@@ -149,7 +150,7 @@ public static class StabilityProbes
     }
 
     /// <summary>How many points <see cref="Lattice"/> yields, without yielding them.</summary>
-    private static long LatticeCount(Vector3[] v, float step)
+    private static long LatticeCount(ImmutableArray<Vector3> v, float step)
     {
         long count = 0;
         for (var t = 1; t + 1 < v.Length; t++)
@@ -165,7 +166,7 @@ public static class StabilityProbes
     /// Points over a polygon's fan triangles on a barycentric lattice about <paramref name="step"/> apart,
     /// corners left out (the vertex probes cover them); none for a polygon smaller than the step.
     /// </summary>
-    private static IEnumerable<Vector3> Lattice(Vector3[] v, float step)
+    private static IEnumerable<Vector3> Lattice(ImmutableArray<Vector3> v, float step)
     {
         for (var t = 1; t + 1 < v.Length; t++)
         {
@@ -187,7 +188,7 @@ public static class StabilityProbes
         return dx * dx + dy * dy + dz * dz;
     }
 
-    private static Vector3 Centroid(Vector3[] v)
+    private static Vector3 Centroid(ImmutableArray<Vector3> v)
     {
         var sum = Vector3.Zero;
         foreach (var p in v) sum += p;

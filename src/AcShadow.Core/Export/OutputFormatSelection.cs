@@ -1,5 +1,6 @@
 using System.Text;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Export;
@@ -21,16 +22,16 @@ public static class OutputFormatSelection
         if (formats == OutputFormats.Canonical) return [canonical];
         var result = new List<OutputFile>(2);
         if (formats.HasFlag(OutputFormats.Canonical)) result.Add(canonical);
-        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == OutputKind.Bsp)
+        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == FixtureKind.Bsp)
         {
             var dump = BspFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
-            result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(canonical.Id), OutputKind.AcdreamGfxObj, canonical.Id,
+            result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(canonical.Id), FixtureKind.AcdreamGfxObj, canonical.Id,
                 AcdreamGfxObjWriter.Write(dump), 0, AcdreamGfxObjWriter.PolygonCount(dump)));
         }
-        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == OutputKind.Cell)
+        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == FixtureKind.Cell)
         {
             var cell = Fixtures.Cells.CellFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
-            result.Add(new OutputFile(Fixtures.Cells.CellFileFormat.AcdreamPathFor(canonical.Id), OutputKind.AcdreamCell, canonical.Id,
+            result.Add(new OutputFile(Fixtures.Cells.CellFileFormat.AcdreamPathFor(canonical.Id), FixtureKind.AcdreamCell, canonical.Id,
                 AcdreamCellWriter.Write(cell), 0, AcdreamCellWriter.PolygonCount(cell)));
         }
         return result;

@@ -1,5 +1,6 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes;
 

@@ -4,8 +4,10 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes;
 
@@ -49,7 +51,7 @@ public static class SceneExporter
                 .Add("unresolved", unresolved))
             .Add("objects", objects)
             .Add("cells", JsonArr.Of(CellEntries(scene, cells ?? []), c => c));
-        var file = new OutputFile(SceneFileFormat.Path, OutputKind.Scene, scene.LandBlockInfoId,
+        var file = new OutputFile(SceneFileFormat.Path, FixtureKind.Scene, scene.LandBlockInfoId,
             CanonicalJsonWriter.WriteUtf8(json), 0, 0);
         return new SceneExport(file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
             bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
@@ -82,7 +84,7 @@ public static class SceneExporter
             .Add("placedBy", SceneFileFormat.PlacedByName(placed.PlacedBy))
             .Add("placedIndex", placed.PlacedIndex)
             .Add("id", JsonIds.Format(placed.Id))
-            .Add("kind", SceneFileFormat.KindName(placed.Kind))
+            .Add("kind", placed.Kind.Name())
             .Add("landblockFrame", FrameJson(JsonArr.Of(placed.Frame.Origin), placed.Frame))
             .Add("worldFrame", FrameJson(new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)), placed.Frame));
         var diagnostics = new List<Diagnostic>();

@@ -14,13 +14,6 @@ public static class SceneFileFormat
     /// </summary>
     public const string Path = "scene.json";
 
-    public static string KindName(SceneObjectKind kind) => kind switch
-    {
-        SceneObjectKind.Setup => "setup",
-        SceneObjectKind.GfxObj => "gfxObj",
-        _ => "other",
-    };
-
     public static string PlacedByName(ScenePlacedBy by) => by switch
     {
         ScenePlacedBy.Object => "object",

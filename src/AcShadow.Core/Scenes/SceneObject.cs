@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes;
 
@@ -9,14 +10,6 @@ public enum ScenePlacedBy
     Building,
     /// <summary>An EnvCell's static objects (its stabs).</summary>
     Cell,
-}
-
-/// <summary>What a placed id is: a Setup (0x02…), a bare GfxObj (0x01…), or something acshadow does not describe.</summary>
-public enum SceneObjectKind
-{
-    Setup,
-    GfxObj,
-    Other,
 }
 
 /// <summary>

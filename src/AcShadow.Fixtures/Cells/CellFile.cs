@@ -26,21 +26,3 @@ public sealed record CellFile(
     /// <summary>The LandBlockInfo id of the cell's landblock (0xXXYYFFFE).</summary>
     public uint LandblockId => (CellId & 0xFFFF0000u) | 0xFFFE;
 }
-
-/// <summary>
-/// One portal: the dat's flags, its polygon (a drawing polygon of the cell structure, in the cell's
-/// frame, with its retail plane; null plane when degenerate), and the other side: a cell of the same
-/// landblock, or outdoors (<see cref="OtherCellId"/> then ends in 0xFFFF).
-/// </summary>
-public sealed record CellPortalRecord(int Index, ushort Flags, ushort PolygonId, uint OtherCellId, ushort OtherPortalId,
-    IReadOnlyList<Vector3> Vertices, Plane? Plane)
-{
-    public bool LeadsOutside => (OtherCellId & 0xFFFF) == CellFileFormat.Outside;
-}
-
-/// <summary>
-/// An object placed inside a cell (the EnvCell's stabs): its landblock-relative frame, its world origin,
-/// and the file that describes it (a Setup's shadow file, or a bare GfxObj's BSP dump with its one shape).
-/// </summary>
-public sealed record CellObject(int Index, uint Id, string Kind, Vector3 LandblockPosition, Quaternion Rotation, Vector3 WorldPosition,
-    string? File, IReadOnlyList<ShadowShape> Shapes);

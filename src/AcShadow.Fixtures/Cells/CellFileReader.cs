@@ -1,5 +1,6 @@
 using System.Text.Json;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Fixtures.Cells;
 
@@ -32,7 +33,7 @@ public static class CellFileReader
         {
             var landblock = BspFileReader.Prop(o, "landblockFrame");
             var file = BspFileReader.Prop(o, "file");
-            return new CellObject(BspFileReader.Int(o, "index"), Id(o, "id"), BspFileReader.Str(o, "kind"),
+            return new CellObject(BspFileReader.Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(BspFileReader.Str(o, "kind")),
                 BspFileReader.Vec(BspFileReader.Prop(landblock, "origin")), BspFileReader.Quat(BspFileReader.Prop(landblock, "orientation")),
                 BspFileReader.Vec(BspFileReader.Prop(BspFileReader.Prop(o, "worldFrame"), "origin")),
                 file.ValueKind == JsonValueKind.Null ? null : file.GetString(),

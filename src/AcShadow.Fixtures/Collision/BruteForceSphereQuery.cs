@@ -1,3 +1,4 @@
+using System.Runtime.InteropServices;
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
@@ -31,8 +32,8 @@ public sealed class BruteForceSphereQuery : ISphereOverlap
     public BruteForceSphereQuery(CompiledBsp bsp)
     {
         Bsp = bsp;
-        _polygons = bsp.Polygons;
-        _nodes = bsp.Nodes;
+        _polygons = ImmutableCollectionsMarshal.AsArray(bsp.Polygons)!;
+        _nodes = ImmutableCollectionsMarshal.AsArray(bsp.Nodes)!;
         _cellAncestors = bsp.SolidCells.Select(c => c.Ancestors.ToArray()).ToArray();
         _cellTakesPos = bsp.SolidCells.Select(c => c.TakesPos.ToArray()).ToArray();
     }

@@ -1,3 +1,4 @@
+using System.Runtime.InteropServices;
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
@@ -43,9 +44,9 @@ public sealed class BspSphereQuery : ISphereOverlap
     public BspSphereQuery(CompiledBsp bsp)
     {
         Bsp = bsp;
-        _polygons = bsp.Polygons;
-        _nodes = bsp.Nodes;
-        _leafPolygons = bsp.LeafPolygons;
+        _polygons = ImmutableCollectionsMarshal.AsArray(bsp.Polygons)!;
+        _nodes = ImmutableCollectionsMarshal.AsArray(bsp.Nodes)!;
+        _leafPolygons = ImmutableCollectionsMarshal.AsArray(bsp.LeafPolygons)!;
         _leafPlanes = Array.ConvertAll(_leafPolygons, k => new Vector4(_polygons[k].Normal, _polygons[k].D));
         _leafSpheres = Array.ConvertAll(_leafPolygons, k => BoundingSphereOf(_polygons[k]));
         _stackSize = StackSizeOf(_nodes);

@@ -1,3 +1,5 @@
+using System.Collections.Immutable;
+using System.Runtime.InteropServices;
 using System.Globalization;
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
@@ -18,10 +20,10 @@ namespace AcShadow.Fixtures.Collision;
 public sealed class CompiledBsp
 {
     public uint GfxObjId { get; }
-    public CompiledPolygon[] Polygons { get; }
-    public CompiledBspNode[] Nodes { get; }
+    public ImmutableArray<CompiledPolygon> Polygons { get; }
+    public ImmutableArray<CompiledBspNode> Nodes { get; }
     /// <summary>Indices into <see cref="Polygons"/>, leaf by leaf (see <see cref="CompiledBspNode.PolygonStart"/>).</summary>
-    public int[] LeafPolygons { get; }
+    public ImmutableArray<int> LeafPolygons { get; }
     /// <summary>Solid leaves reachable from the root that list at least one polygon, as ancestor paths.</summary>
     public IReadOnlyList<SolidCell> SolidCells { get; }
     /// <summary>True when no check found a way for the tree's pruning to miss a contact the brute force sees.</summary>
@@ -32,9 +34,10 @@ public sealed class CompiledBsp
         IReadOnlyList<SolidCell> solidCells, bool conservative, IReadOnlyList<Diagnostic> diagnostics)
     {
         GfxObjId = id;
-        Polygons = polygons;
-        Nodes = nodes;
-        LeafPolygons = leafPolygons;
+        // Wrapped, not copied: the arrays are built here and never handed out, so nothing can change them.
+        Polygons = ImmutableCollectionsMarshal.AsImmutableArray(polygons);
+        Nodes = ImmutableCollectionsMarshal.AsImmutableArray(nodes);
+        LeafPolygons = ImmutableCollectionsMarshal.AsImmutableArray(leafPolygons);
         SolidCells = solidCells;
         PruningIsConservative = conservative;
         Diagnostics = diagnostics;

@@ -1,3 +1,5 @@
+using System.Collections.Immutable;
+using System.Runtime.InteropServices;
 using System.Numerics;
 using AcShadow.Fixtures.Geometry;
 
@@ -14,7 +16,7 @@ public sealed class CompiledPolygon
     public int Id { get; }
     public Vector3 Normal { get; }
     public float D { get; }
-    public Vector3[] Vertices { get; }
+    public ImmutableArray<Vector3> Vertices { get; }
 
     internal readonly Vector3[] EdgeStart;
     internal readonly Vector3[] Edge;
@@ -27,7 +29,9 @@ public sealed class CompiledPolygon
         Id = id;
         Normal = plane.Normal;
         D = plane.D;
-        Vertices = vertices;
+        // Copied: the caller keeps its array, and the edges below are computed from this copy.
+        vertices = [.. vertices];
+        Vertices = ImmutableCollectionsMarshal.AsImmutableArray(vertices);
         var n = vertices.Length;
         EdgeStart = new Vector3[n];
         Edge = new Vector3[n];

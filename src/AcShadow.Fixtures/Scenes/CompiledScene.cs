@@ -6,16 +6,6 @@ using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Fixtures.Scenes;
 
-/// <summary>One placed object of a compiled scene: what it is, the model chosen for it and how many shapes that model tests.</summary>
-public sealed record CompiledObject(int Index, uint Id, string Kind, string? Model, int Shapes, Vector3 LandblockPosition, Quaternion LandblockRotation)
-{
-    /// <summary>The indoor cell the object stands in, when a cell placed it.</summary>
-    public uint? CellId { get; init; }
-}
-
-/// <summary>One indoor cell of a compiled scene: always its retail tree, in the cell's landblock-relative frame.</summary>
-public sealed record CompiledCell(uint CellId, string Model, Vector3 LandblockPosition, Quaternion LandblockRotation);
-
 /// <summary>
 /// compiled-scene.json (what <c>acshadow scene</c> writes) loaded: every object answered by the model the
 /// compiler chose for it — spheres, cylinders, part boxes, part convex hulls, or the part's retail BSP
@@ -89,7 +79,7 @@ public sealed class CompiledScene
             var cellId = o.TryGetProperty("cellId", out var c) && c.ValueKind == JsonValueKind.String
                 ? JsonIds.TryParse(c.GetString()!, out var parsedCell) ? parsedCell : throw new FormatException("cellId is not a hex id")
                 : (uint?)null;
-            objects.Add(new CompiledObject(index, id, BspFileReader.Str(o, "kind"), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
+            objects.Add(new CompiledObject(index, id, SceneObjectKinds.Parse(BspFileReader.Str(o, "kind")), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
             var bound = BspFileReader.Prop(o, "bound");
             if (shapes.Length == 0 || bound.ValueKind == JsonValueKind.Null) continue;
             queries.Add(new PlacedQuery(index, id, position, rotation, new AnyOverlap(shapes),

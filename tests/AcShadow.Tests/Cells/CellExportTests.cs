@@ -6,6 +6,7 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Scenes;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Cells;
@@ -69,7 +70,7 @@ public class CellExportTests
 
         var inside = Assert.Single(cell.Objects);
         Assert.Equal(0x02003300u, inside.Id);
-        Assert.Equal("setup", inside.Kind);
+        Assert.Equal(SceneObjectKind.Setup, inside.Kind);
         Assert.Equal("setups/0x02003300.shadow.json", inside.File);
         Assert.Equal(new Vector3(62, 57.5f, 12), inside.LandblockPosition);
     }

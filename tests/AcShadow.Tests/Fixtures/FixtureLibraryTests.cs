@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Support;
@@ -18,7 +19,7 @@ public class FixtureLibraryTests
         var onDisk = Directory.GetFiles(Committed.Folder, "*.json", SearchOption.AllDirectories)
             .Select(f => Path.GetRelativePath(Committed.Folder, f).Replace('\\', '/')).Where(p => p != "index.json").Order().ToArray();
         Assert.Equal(onDisk, index.Files.Select(f => f.Path).Order().ToArray());
-        Assert.Equal(14, index.OfKind("shadow").Count());
+        Assert.Equal(14, index.OfKind(FixtureKind.Shadow).Count());
     }
 
     [Fact]
@@ -32,7 +33,7 @@ public class FixtureLibraryTests
         foreach (var (o, p) in scene.Objects.Where(o => o.File is not null).Zip(placed))
         {
             Assert.Equal(o.WorldPosition, p.Position);
-            var shape = p.Fixture.Shapes.Shapes.First(s => s.LocalSphere is not null);
+            var shape = p.Fixture.Shadow.Shapes.First(s => s.LocalSphere is not null);
             var probe = p.Position + Vector3.Transform(shape.LocalSphere!.Value.Center, p.Rotation);
             Assert.True(p.Overlaps(probe, shape.LocalSphere.Value.Radius), $"object {o.Index} (0x{o.Id:X8})");
             Assert.False(p.Overlaps(probe + new Vector3(0, 0, 1000), 0.5f));

@@ -85,9 +85,9 @@ public sealed class ViewCommandTests
         // and bounds (its posed physics vertices, dat Z-up turned to glTF Y-up as (x, z, −y)).
         var door = CommittedDoor();
         var retail = root.VisualChildren.Single(g => g.Name == "retail").VisualChildren.Single().VisualChildren.ToArray();
-        for (var i = 0; i < door.Shapes.Shapes.Count; i++)
+        for (var i = 0; i < door.Shadow.Shapes.Count; i++)
         {
-            var shape = door.Shapes.Shapes[i];
+            var shape = door.Shadow.Shapes[i];
             var dump = door.Bsps[shape.GfxObjId!.Value];
             Assert.Equal(dump.Polygons.Where(p => p.Plane is not null).Sum(p => p.VertexIds.Count - 2), Triangles(retail[i]));
             var vertices = PosedVertices(door, shape).Select(GlbWriter.ToGltf).ToArray();
@@ -212,7 +212,7 @@ public sealed class ViewCommandTests
 
         // The leaf (part 0), from the committed shadow file: the middle of its posed physics vertices.
         var door = CommittedDoor();
-        var leaf = PosedVertices(door, door.Shapes.Shapes[0]);
+        var leaf = PosedVertices(door, door.Shadow.Shapes[0]);
         var (lo, hi) = (leaf.Aggregate(Vector3.Min), leaf.Aggregate(Vector3.Max));
         var centre = (lo + hi) / 2;
         var (fx, fy) = layout.Front(centre with { Z = lo.Z + (hi.Z - lo.Z) * 0.3f });

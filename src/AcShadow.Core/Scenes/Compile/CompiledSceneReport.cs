@@ -1,4 +1,5 @@
 using AcShadow.Core.Chart;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes.Compile;
 

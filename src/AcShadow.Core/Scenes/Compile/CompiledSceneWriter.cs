@@ -4,6 +4,7 @@ using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes.Compile;
 
@@ -107,7 +108,7 @@ public static class CompiledSceneWriter
             .Add("placedIndex", placed.PlacedIndex)
             .Add("cellId", p.CellId is { } cell ? JsonIds.Format(cell) : null)
             .Add("id", JsonIds.Format(placed.Id))
-            .Add("kind", SceneFileFormat.KindName(placed.Kind))
+            .Add("kind", placed.Kind.Name())
             .Add("landblockFrame", new JsonObj().Add("origin", placed.Frame.Origin).Add("orientation", JsonShapes.Quaternion(placed.Frame.Orientation)))
             .Add("worldFrame", new JsonObj().Add("origin", new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)))
                 .Add("orientation", JsonShapes.Quaternion(placed.Frame.Orientation)))

@@ -2,6 +2,7 @@ using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes.Compile;
 
