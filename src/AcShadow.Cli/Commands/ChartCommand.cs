@@ -11,6 +11,7 @@ using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
+using AcShadow.Files;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
@@ -137,8 +138,12 @@ public static class ChartCommand
                     tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
                     {
                         DiagnosticPrinter.Print(console.Error, JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics);
+                        foreach (var note in chart.Notes) console.Error.WriteLine($"warning: {JsonIds.Format(chart.SetupId)}: {note}");
                         chartRows.Write(ChartCsv.Rows(chart));
                         failureRows.Write(FailuresCsv.Rows(chart));
+                        // The previous run's tables describe other maps: they go before the first map is
+                        // replaced, so a run stopped part-way leaves no chart.csv its maps contradict.
+                        if (mapsWritten == 0) RemovePreviousTables(outDir);
                         var map = ChartFiles.FailureMap(options, models, chart);
                         bytes += AtomicOutput.Write(outDir, map.RelativePath, map.Content);
                         mapsWritten++;
@@ -163,7 +168,7 @@ public static class ChartCommand
         catch (OperationCanceledException) when (console.Interrupted.IsCancellationRequested)
         {
             throw new CliException(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
-                $"interrupted: {mapsWritten} failure map(s) of {objectIds.Length} object(s) were written to {outDir}, each whole; chart.csv, summary.csv, failures.csv and speed-accuracy.svg were not, so the folder is incomplete: run the same chart again"));
+                $"interrupted: {mapsWritten} failure map(s) of {objectIds.Length} object(s) were written to {outDir}, each whole; chart.csv, summary.csv, failures.csv and speed-accuracy.svg were not (nor are an earlier run's left), so the folder is incomplete: run the same chart again"));
         }
         finally
         {
@@ -209,6 +214,23 @@ public static class ChartCommand
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wrote {4 + mapsWritten + (cellCharts.Count > 0 ? 1 : 0)} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
         return ExitCodes.Ok;
+    }
+
+    /// <summary>The tables and the speed chart a finished run wrote (checked as ours before the run began).</summary>
+    private static void RemovePreviousTables(string outDir)
+    {
+        foreach (var name in (ReadOnlySpan<string>)["chart.csv", "summary.csv", "failures.csv", "speed-accuracy.svg"])
+        {
+            var path = OutputPaths.Target(outDir, name);
+            try
+            {
+                if (FileKinds.Of(path) == FileKind.Regular) File.Delete(path);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing its failure maps: {e.Message}");
+            }
+        }
     }
 
     private static float Metres(string? text, string option, float fallback)

@@ -33,6 +33,13 @@ public sealed record ChartOptions
     /// <summary>Grid probes at most; a larger grid is coarsened (spacing doubled until it fits) and says so.</summary>
     public int MaxGridProbes { get; init; } = 250_000;
 
+    /// <summary>
+    /// Stability probes at most per object; past it they are laid on faces and edges at a coarser spacing
+    /// (doubled until they fit) and a note says so. A real object stays far below (a 2,000-polygon building
+    /// at 0.25 m: about 200,000); a part a damaged DefaultScale blows up to 1e19 times its size would not.
+    /// </summary>
+    public int MaxStabilityProbes { get; init; } = 2_000_000;
+
     /// <summary>False passes and, separately, false blocks listed per model and object, nearest the boundary first.</summary>
     public int FailuresPerModel { get; init; } = 10;
 
@@ -69,7 +76,7 @@ public sealed record ChartOptions
         if (!float.IsFinite(StabilityOffset) || StabilityOffset <= 0f) return $"stability offset must be a positive number of metres, not {F(StabilityOffset)}";
         if (!float.IsFinite(DoorwayStep) || DoorwayStep < 0.005f) return $"doorway step must be at least 0.005 m, not {F(DoorwayStep)}";
         if (DoorwayOffsets.Any(o => !float.IsFinite(o))) return "doorway offsets must be numbers";
-        if (MaxGridProbes < 1 || TimingProbes < 1 || TimingBatches < 1 || WarmupPasses < 0 || FailuresPerModel < 0) return "probe, timing and failure counts must be positive";
+        if (MaxGridProbes < 1 || MaxStabilityProbes < 1 || TimingProbes < 1 || TimingBatches < 1 || WarmupPasses < 0 || FailuresPerModel < 0) return "probe, timing and failure counts must be positive";
         return null;
     }
 

@@ -17,10 +17,17 @@ public sealed record ChartProbes(Probe[] Probes, float GridSpacing, Bounds Bound
             .Concat(models.Where(m => !ReferenceEquals(m, reference)).SelectMany(m => m.Shapes).Where(s => s.Polytope is not null));
         var grid = ProbeGrid.Build(everything, options);
         var opening = DoorwayProbes.Find(ShapeBounds.Of(reference.Shapes));
-        var probes = grid.Probes.Concat(DoorwayProbes.Build(opening, options)).Concat(StabilityProbes.Build(surfaces, options)).ToArray();
+        var stability = StabilityProbes.Lay(surfaces, options);
+        var probes = grid.Probes.Concat(DoorwayProbes.Build(opening, options)).Concat(stability.Probes).ToArray();
         var notes = new List<string>();
         if (grid.Spacing != options.Spacing)
-            notes.Add(FormattableString.Invariant($"grid coarsened from {options.Spacing} m to {grid.Spacing} m to stay under {options.MaxGridProbes} probes"));
+        {
+            // Said with the size that forced it: a span of 1e38 m is a corrupt sphere or vertex, not a big object.
+            var size = grid.Region.Size;
+            notes.Add(FormattableString.Invariant($"grid-coarsened: grid coarsened from {options.Spacing} m to {grid.Spacing:G6} m to stay under {options.MaxGridProbes} probes: the shapes span {size.X:G6} × {size.Y:G6} × {size.Z:G6} m"));
+        }
+        if (stability.SpacingFactor > 1f)
+            notes.Add(FormattableString.Invariant($"stability-coarsened: stability probes laid every {options.Spacing * stability.SpacingFactor:G6} m instead of {options.Spacing} m on faces and edges to stay under {options.MaxStabilityProbes} probes (a part scaled far past any real object's size, or one of very many polygons)"));
         return new ChartProbes(probes, grid.Spacing, everything, opening, notes);
     }
 

@@ -25,29 +25,62 @@ public static class StabilityProbes
     /// <summary>Face lattice points at most, per polygon (a huge polygon is sampled more coarsely).</summary>
     public const int MaxPointsPerPolygon = 2000;
 
-    public static IReadOnlyList<Probe> Build(IEnumerable<PreparedShape> surfaces, ChartOptions options)
+    /// <summary>What <see cref="Laid"/> built: the probes, and how many times the spacing was multiplied to stay under the limit (1: not at all).</summary>
+    public sealed record Laid(IReadOnlyList<Probe> Probes, float SpacingFactor);
+
+    public static IReadOnlyList<Probe> Build(IEnumerable<PreparedShape> surfaces, ChartOptions options) => Lay(surfaces, options).Probes;
+
+    /// <summary>The probes for every surface, the spacing coarsened (doubled) as often as <see cref="ChartOptions.MaxStabilityProbes"/> needs.</summary>
+    public static Laid Lay(IEnumerable<PreparedShape> surfaces, ChartOptions options)
     {
+        var all = surfaces.ToArray();
+        var factor = 1f;
+        // Counted before anything is built; the points on faces and edges fall as the spacing grows, those at
+        // centroids, vertices and nodes do not (and are bounded by the bytes the dat spent on them).
+        while (factor < 1e30f && all.Sum(s => Count(s, options, factor)) > options.MaxStabilityProbes) factor *= 2f;
         var probes = new List<Probe>();
-        foreach (var shape in surfaces)
+        foreach (var shape in all)
         {
-            if (shape.Polytope is { } solid) Add(probes, shape.Pose, [.. solid.Faces], [], options);
-            else if (shape.Bsp is { } bsp) Add(probes, shape.Pose, bsp.Polygons, bsp.Nodes, options);
+            if (shape.Polytope is { } solid) Add(probes, shape.Pose, [.. solid.Faces], [], options, factor);
+            else if (shape.Bsp is { } bsp) Add(probes, shape.Pose, bsp.Polygons, bsp.Nodes, options, factor);
         }
-        return probes;
+        return new Laid(probes, factor);
+    }
+
+    /// <summary>How many probes <see cref="Add"/> would place for one surface with the spacing multiplied by <paramref name="factor"/>.</summary>
+    private static long Count(PreparedShape shape, ChartOptions options, float factor)
+    {
+        ImmutableArray<CompiledPolygon> polygons = [];
+        ImmutableArray<CompiledBspNode> nodes = [];
+        if (shape.Polytope is { } solid) polygons = [.. solid.Faces];
+        else if (shape.Bsp is { } bsp) (polygons, nodes) = (bsp.Polygons, bsp.Nodes);
+        var step = options.Spacing * factor / shape.Pose.Scale;
+        long face = 0, edge = 0, vertex = 0, plane = 0;
+        foreach (var polygon in polygons)
+        {
+            var v = polygon.Vertices;
+            face += 1 + LatticeCount(v, step);
+            vertex += v.Length; // an upper bound: shared vertices are probed once
+            for (var i = 0; i < v.Length; i++)
+                edge += EdgePoints(v[i == 0 ? v.Length - 1 : i - 1], v[i], step); // shared edges counted twice: an upper bound
+        }
+        foreach (var node in nodes)
+            if (!node.IsLeaf && node.Normal != Vector3.Zero && float.IsFinite(node.SphereRadius)) plane++;
+        return options.Radii.Count * (6 * face + 2 * edge + 2 * vertex + 6 * plane);
     }
 
     /// <summary>The same probes for one tree posed in entity space (an indoor cell's structure in its cell's frame).</summary>
     public static IReadOnlyList<Probe> Build(CompiledBsp bsp, PartPose pose, ChartOptions options)
     {
         var probes = new List<Probe>();
-        Add(probes, pose, bsp.Polygons, bsp.Nodes, options);
+        Add(probes, pose, bsp.Polygons, bsp.Nodes, options, 1f);
         return probes;
     }
 
-    private static void Add(List<Probe> probes, PartPose pose, ImmutableArray<CompiledPolygon> polygons, ImmutableArray<CompiledBspNode> nodes, ChartOptions options)
+    private static void Add(List<Probe> probes, PartPose pose, ImmutableArray<CompiledPolygon> polygons, ImmutableArray<CompiledBspNode> nodes, ChartOptions options, float factor)
     {
         var delta = options.StabilityOffset / pose.Scale;
-        var step = options.Spacing / pose.Scale;
+        var step = options.Spacing * factor / pose.Scale;
         var edges = new Dictionary<(Vector3, Vector3), (Vector3 A, Vector3 B, Vector3 Normals, Vector3 Out, int Count)>();
         var vertices = new Dictionary<Vector3, Vector3>();
         var facePoints = new List<(Vector3 At, Vector3 Normal)>();
@@ -82,8 +115,7 @@ public static class StabilityProbes
             foreach (var e in edges.Values)
             {
                 var dir = e.Count == 1 ? Unit(e.Normals + e.Out, e.Normals) : Unit(e.Normals, e.Out);
-                var length = MathF.Sqrt(Vector3DistanceSquared(e.A, e.B));
-                var count = Math.Clamp((int)MathF.Ceiling(length / step), 1, MaxPointsPerPolygon);
+                var count = EdgePoints(e.A, e.B, step);
                 for (var m = 0; m < count; m++)
                 {
                     var mid = e.A + (e.B - e.A) * ((m + 0.5f) / count);
@@ -105,6 +137,31 @@ public static class StabilityProbes
         }
     }
 
+    private static int EdgePoints(Vector3 a, Vector3 b, float step) =>
+        Math.Clamp((int)MathF.Ceiling(MathF.Sqrt(Vector3DistanceSquared(a, b)) / step), 1, MaxPointsPerPolygon);
+
+    /// <summary>The lattice divisions of one fan triangle (points are laid only when it is 2 or more).</summary>
+    private static int Divisions(Vector3 a, Vector3 b, Vector3 c, float step)
+    {
+        var longest = MathF.Sqrt(MathF.Max(Vector3DistanceSquared(a, b), MathF.Max(Vector3DistanceSquared(b, c), Vector3DistanceSquared(a, c))));
+        var k = (int)MathF.Ceiling(longest / step);
+        while (k > 1 && (k + 1) * (k + 2) / 2 > MaxPointsPerPolygon) k /= 2;
+        return k;
+    }
+
+    /// <summary>How many points <see cref="Lattice"/> yields, without yielding them.</summary>
+    private static long LatticeCount(ImmutableArray<Vector3> v, float step)
+    {
+        long count = 0;
+        for (var t = 1; t + 1 < v.Length; t++)
+        {
+            var k = Divisions(v[0], v[t], v[t + 1], step);
+            // All (i, j) with i + j ≤ k but the three corners, as Lattice lays them.
+            if (k >= 2) count += (long)(k + 1) * (k + 2) / 2 - 3;
+        }
+        return count;
+    }
+
     /// <summary>
     /// Points over a polygon's fan triangles on a barycentric lattice about <paramref name="step"/> apart,
     /// corners left out (the vertex probes cover them); none for a polygon smaller than the step.
@@ -114,9 +171,7 @@ public static class StabilityProbes
         for (var t = 1; t + 1 < v.Length; t++)
         {
             Vector3 a = v[0], b = v[t], c = v[t + 1];
-            var longest = MathF.Sqrt(MathF.Max(Vector3DistanceSquared(a, b), MathF.Max(Vector3DistanceSquared(b, c), Vector3DistanceSquared(a, c))));
-            var k = (int)MathF.Ceiling(longest / step);
-            while (k > 1 && (k + 1) * (k + 2) / 2 > MaxPointsPerPolygon) k /= 2;
+            var k = Divisions(a, b, c, step);
             if (k < 2) continue;
             for (var i = 0; i <= k; i++)
                 for (var j = 0; i + j <= k; j++)

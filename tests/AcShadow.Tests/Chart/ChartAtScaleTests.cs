@@ -3,6 +3,10 @@ using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Chart;
 using AcShadow.Core.Chart.Output;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Tests.Errors;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Chart;
@@ -86,5 +90,67 @@ public class ChartAtScaleTests
         Assert.Contains("0x0200F000", line);
         Assert.Contains("… and 20 more (all in index.json's skipped)", line);
         Assert.DoesNotContain("0x0200F01D", line);
+    }
+
+    [Fact]
+    public void A_BSP_sphere_a_flipped_exponent_bit_sends_1e38_m_away_charts_with_the_coarsening_said_and_a_map_of_bounded_size()
+    {
+        // The part's bounding sphere as a fuzzed dat damaged it (seed 1, case 3833): one exponent bit of its
+        // centre's y flipped, 0.7 m becoming 2.4e38 m. The part-spheres model then sees a sphere there, so the
+        // grid spans 1e38 m (coarsened to fit its probe limit) and lies in one layer, which the map draws.
+        var y = BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(0.7f) ^ (1 << 30));
+        Assert.True(y > 1e38f);
+        var leaf = new PhysicsBspNode(BspNodeType.Leaf, default, null, null,
+            new Sphere(new Vector3(0.5f, y, 0.3f), 0.77f), 0, 1, [0]);
+        using var dat = BrokenDats.Folder(BrokenDats.Portal(
+            BrokenDats.Bytes(BrokenDats.SetupOf(0x02000002, 0x01000002)), BrokenDats.Bytes(BrokenDats.Box(0x01000002, bsp: leaf))));
+        using var dir = new TempDir();
+
+        var allocated = GC.GetAllocatedBytesForCurrentThread();
+        var run = CliRun.Of("chart", "--setup", "0x02000002", "--dat", dat.Path, "--out", dir.Path, "--quiet");
+        allocated = GC.GetAllocatedBytesForCurrentThread() - allocated;
+
+        Assert.Equal(0, run.ExitCode);
+        // Not a silent guess: the coarsening is a warning naming the span that forced it.
+        var warning = Assert.Single(run.ErrorLines, l => l.StartsWith("warning: 0x02000002: grid-coarsened: ", StringComparison.Ordinal));
+        Assert.Matches(@"the shapes span [^ ]+ × 2\.\d+E\+38 × [^ ]+ m$", warning);
+        var map = Path.Combine(dir.Path, "failure-map-0x02000002.svg");
+        var cells = System.Xml.Linq.XDocument.Load(map).Descendants().Count(e => e.Name.LocalName == "rect");
+        var models = Core.Chart.Models.ShapeModels.All.Count;
+        Assert.InRange(cells, models, models * (FailureMapSvg.MaxCellsPerSide * FailureMapSvg.MaxCellsPerSide + 1) + 4);
+        Assert.Contains("per cell (worst verdict shown", File.ReadAllText(map));
+        // The fuzz campaign's bound for a whole case; before the map merged cells, this chart alone took 403 MiB.
+        Assert.True(allocated < 128L << 20, $"allocated {allocated >> 20} MiB");
+    }
+
+    [Fact]
+    public void A_failure_map_wider_than_its_cell_limit_merges_cells_and_a_false_pass_is_never_merged_away()
+    {
+        // A flat 201 × 201 layer (40,401 grid probes), all clear, but for one false pass and one false block.
+        var options = new ChartOptions { Spacing = 1f, Margin = 0f };
+        var probes = ProbeGrid.Build(new Bounds(new Vector3(-100, -100, 0), new Vector3(100, 100, 0)), options).Probes.ToArray();
+        Assert.Equal(201 * 201, probes.Length);
+        var pass = Array.FindIndex(probes, p => p.Center.X == 37 && p.Center.Y == -12);
+        var block = Array.FindIndex(probes, p => p.Center.X == -80 && p.Center.Y == 55);
+        var reference = new bool[probes.Length];
+        reference[pass] = true;
+        var answers = new bool[probes.Length];
+        answers[block] = true;
+        var timing = TimingStats.Of([1.0]);
+        ModelOutcome Outcome(string name, bool[] a, int falsePass, int falseBlock) =>
+            new(name, 1, a, probes.Length - falsePass - falseBlock, falsePass, falseBlock, 0, 0, 0, timing, [], []);
+        var chart = new ObjectChart(0x02000001, probes, 1f, new Bounds(new Vector3(-100), new Vector3(100)), null, reference,
+            [Outcome("retail", reference, 0, 0), Outcome("model", answers, 1, 1)], "retail", []);
+
+        var svg = FailureMapSvg.Write(new ChartReport(options, ["retail", "model"], [chart]), chart);
+
+        // 201 cells a side is merged 3 × 3 into 67 a side, and every verdict that was there is still drawn.
+        Assert.Contains("3 × 3 per cell", svg);
+        var fills = System.Xml.Linq.XDocument.Parse(svg).Descendants().Where(e => e.Name.LocalName == "rect")
+            .Select(e => (string?)e.Attribute("fill")).ToArray();
+        Assert.InRange(fills.Length, 2 * 67 * 67, 2 * 67 * 67 + 10);
+        Assert.Equal(1 + 1, fills.Count(f => f == "#d62728"));    // the model's merged false pass, and the legend's swatch
+        Assert.Equal(1 + 1, fills.Count(f => f == "#1f77b4"));    // its false block, and the legend's
+        Assert.Equal(1 + 1, fills.Count(f => f == "#5a5a5a"));    // the reference blocking in its own panel, and the legend's
     }
 }

@@ -27,6 +27,27 @@ public class ProbeTests
     }
 
     [Fact]
+    public void Stability_probes_past_their_limit_are_laid_more_coarsely_and_say_so()
+    {
+        int Stability(ObjectChart chart) => chart.Probes.Count(p => ProbeKinds.Stability.Contains(p.Kind));
+        var full = Assert.Single(SampleChart.Run(new ChartOptions(), SampleChart.Door).Objects);
+        Assert.DoesNotContain(full.Notes, n => n.StartsWith("stability-coarsened", StringComparison.Ordinal));
+
+        // A limit below what the door needs at 0.25 m: faces and edges are sampled more coarsely until it fits.
+        var limit = Stability(full) / 3;
+        var capped = Assert.Single(SampleChart.Run(new ChartOptions { MaxStabilityProbes = limit }, SampleChart.Door).Objects);
+
+        Assert.InRange(Stability(capped), 1, limit);
+        // Every vertex and splitting plane is still probed; only the points laid along faces and edges thin out.
+        Assert.Equal(ProbeCount(full, ProbeKind.Vertex), ProbeCount(capped, ProbeKind.Vertex));
+        Assert.Equal(ProbeCount(full, ProbeKind.SplittingPlane), ProbeCount(capped, ProbeKind.SplittingPlane));
+        Assert.Contains(capped.Notes, n => n.StartsWith("stability-coarsened: stability probes laid every ", StringComparison.Ordinal) && n.Contains($"under {limit} probes"));
+        Assert.NotNull(new ChartOptions { MaxStabilityProbes = 0 }.Problem());
+    }
+
+    private static int ProbeCount(ObjectChart chart, ProbeKind kind) => chart.Probes.Count(p => p.Kind == kind);
+
+    [Fact]
     public void Doorway_lines_cross_slab_footprints_only()
     {
         var options = new ChartOptions();

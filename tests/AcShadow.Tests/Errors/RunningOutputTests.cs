@@ -171,6 +171,48 @@ public class RunningOutputTests
         Assert.Contains("is an incomplete run", Assert.Single(verify.ErrorLines));
     }
 
+    [Theory]
+    [InlineData("1")]
+    [InlineData("2")]
+    public void Ctrl_C_during_a_chart_finishes_the_object_says_what_was_written_leaves_no_temporary_and_the_next_run_completes_the_folder(string jobs)
+    {
+        using var dir = new TempDir();
+        var dats = WriteLongDat(dir);
+        var outDir = Path.Combine(dir.Path, "out");
+        // A finished chart first: an interrupted run over it must not leave its tables behind to describe maps they did not chart.
+        Assert.Equal(0, CliRun.Of("chart", "--setup", "0x020019FF", "--dat", dats, "--out", outDir, "--quiet").ExitCode);
+        var table = Path.Combine(outDir, "chart.csv");
+        Assert.True(File.Exists(table));
+
+        // The run has charted its first object when the old tables go: no timing, only what is on disk.
+        using var process = Process.Start(BuiltCli.Start([], "chart", "--all", "--dat", dats, "--out", outDir, "--jobs", jobs))!;
+        while (!process.HasExited && File.Exists(table)) Thread.Sleep(2);
+        Assert.False(process.HasExited, "the chart finished before the test could act");
+        Assert.Equal(0, BuiltCli.RunShell([], $"kill -INT {process.Id}").ExitCode);
+        var (code, _, error) = Finish(process);
+
+        Assert.Equal(130, code);
+        var line = Assert.Single(Lines(error), l => l.StartsWith("acshadow: interrupted", StringComparison.Ordinal));
+        var said = System.Text.RegularExpressions.Regex.Match(line, @"^acshadow: interrupted: (\d+) failure map\(s\) of 400 object\(s\) were written to .*the folder is incomplete");
+        Assert.True(said.Success, line);
+        Assert.DoesNotContain(Lines(error), l => l.TrimStart().StartsWith("at ", StringComparison.Ordinal));
+        // Only whole files: the maps it said it wrote (the earlier run's own map among them or not), no table, no temporary.
+        var files = Directory.GetFiles(outDir, "*", SearchOption.AllDirectories).Select(Path.GetFileName).ToArray();
+        Assert.DoesNotContain(files, f => f!.EndsWith(".tmp", StringComparison.Ordinal));
+        Assert.DoesNotContain(files, f => f is "chart.csv" or "summary.csv" or "failures.csv" or "speed-accuracy.svg");
+        var maps = Directory.GetFiles(outDir, "failure-map-*.svg");
+        Assert.InRange(maps.Length, int.Parse(said.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture), int.Parse(said.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture) + 1);
+        Assert.True(int.Parse(said.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture) < 400);
+        foreach (var map in maps) Assert.Equal("svg", System.Xml.Linq.XDocument.Load(map).Root!.Name.LocalName);
+
+        // verify does not take a chart folder for fixtures, and the next chart run takes the folder back as its own.
+        Assert.Equal(2, CliRun.Of("verify", "--fixtures", outDir, "--dat", dats).ExitCode);
+        var again = CliRun.Of("chart", "--setup", "0x020019FF", "--dat", dats, "--out", outDir, "--quiet");
+        Assert.Equal(0, again.ExitCode);
+        Assert.True(File.Exists(table));
+        Assert.False(File.Exists(Path.Combine(outDir, FolderLock.FileName)));
+    }
+
     [Fact]
     public void A_file_size_limit_is_exit_6_with_no_temporary_left_and_the_signal_is_not_ignored_by_the_test()
     {

@@ -6,10 +6,16 @@ namespace AcShadow.Core.Chart.Output;
 /// failure-map-&lt;id&gt;.svg: the object seen from above at walking height, one panel per model. Each grid
 /// probe of the walking-height layer is a cell, each doorway-line probe a dot, coloured by verdict against
 /// the reference: both block, both clear, false pass (reference blocks, model lets through), false block.
+/// A layer wider than <see cref="MaxCellsPerSide"/> cells (a huge or flat object, whose whole grid may lie
+/// in this one layer) is drawn with k × k probes merged into one cell showing its worst verdict, so a map
+/// stays a few megabytes however the grid was coarsened: a panel is 360 px, and finer cells would not show.
 /// </summary>
 public static class FailureMapSvg
 {
     private const double PanelPlot = 360, PanelGapX = 70, PanelGapY = 96, Left = 70, Top = 172, Columns = 3;
+
+    /// <summary>Cells drawn at most along a panel's side (4 px each); more grid probes than that are merged.</summary>
+    public const int MaxCellsPerSide = 90;
 
     public static string FileName(uint setupId) => $"failure-map-{Id(setupId)}.svg";
 
@@ -21,6 +27,8 @@ public static class FailureMapSvg
                 || (chart.Probes[i].Kind == ProbeKind.Grid && MathF.Abs(chart.Probes[i].Center.Z - walk) < 1e-3f))
             .ToArray();
         var half = chart.GridSpacing / 2;
+        var grid = MergeFactor(chart, slice);
+        var merge = grid.Merge;
         double minX = double.MaxValue, maxX = double.MinValue, minY = double.MaxValue, maxY = double.MinValue;
         foreach (var i in slice)
         {
@@ -40,7 +48,8 @@ public static class FailureMapSvg
 
         svg.Text(20, 30, $"Setup {Id(chart.SetupId)}: where each model disagrees with {report.Reference}, seen from above at walking height", 17, "start", "bold");
         svg.Text(20, 52,
-            $"slice z = {F(walk, 2)} m (centre of a {F(report.Options.ProbeRadius, 2)} m probe standing on z = 0); cells: grid probes every {F(chart.GridSpacing, 2)} m; framed strips: doorway lines",
+            $"slice z = {F(walk, 2)} m (centre of a {F(report.Options.ProbeRadius, 2)} m probe standing on z = 0); cells: grid probes every {F(chart.GridSpacing, 2)} m" +
+            (merge > 1 ? $", {I(merge)} × {I(merge)} per cell (worst verdict shown: false pass, false block, both block, both clear)" : "") + "; framed strips: doorway lines",
             12.5);
         Legend(svg, 20, 84);
 
@@ -59,12 +68,23 @@ public static class FailureMapSvg
                 $"{F(outcome.AgreementPercent, 2)}% agree overall; here: {I(slicePass)} false pass, {I(sliceBlock)} false block", 11.5);
             svg.Rect(px, py, plotW, plotH, "#ffffff", ChartPalette.Axis);
 
-            foreach (var i in slice)
+            if (merge == 1)
+                foreach (var i in slice)
+                {
+                    var p = chart.Probes[i];
+                    if (p.Kind != ProbeKind.Grid) continue;
+                    svg.Rect(X(p.Center.X - half), Y(p.Center.Y + half), chart.GridSpacing * scale, chart.GridSpacing * scale,
+                        Colour(chart.Reference[i], outcome.Answers[i]), "#ffffff", 0.3);
+                }
+            else
             {
-                var p = chart.Probes[i];
-                if (p.Kind != ProbeKind.Grid) continue;
-                svg.Rect(X(p.Center.X - half), Y(p.Center.Y + half), chart.GridSpacing * scale, chart.GridSpacing * scale,
-                    Colour(chart.Reference[i], outcome.Answers[i]), "#ffffff", 0.3);
+                var side = (double)chart.GridSpacing * merge;
+                foreach (var ((bx, by), verdict) in MergedCells(chart, slice, outcome.Answers, grid))
+                {
+                    double x0 = grid.Left + bx * side, y1 = grid.Top - by * side;
+                    double x1 = Math.Min(x0 + side, maxX), y0 = Math.Max(y1 - side, minY);
+                    svg.Rect(X(x0), Y(y1), (x1 - x0) * scale, (y1 - y0) * scale, MergedColours[verdict], "#ffffff", 0.3);
+                }
             }
             // Doorway lines: a strip of one cell per probe (step long, 5 px wide), coloured by verdict, framed in black.
             foreach (var line in slice.Where(i => chart.Probes[i].Kind == ProbeKind.Doorway).GroupBy(i => chart.Probes[i].Line))
@@ -87,6 +107,47 @@ public static class FailureMapSvg
         }
         return svg.Render();
     }
+
+    /// <summary>
+    /// How many grid probes along each side one drawn cell stands for (1 unless the layer is wider than
+    /// <see cref="MaxCellsPerSide"/>), and the layer's top-left corner the merged cells are counted from.
+    /// </summary>
+    private static (int Merge, double Left, double Top) MergeFactor(ObjectChart chart, int[] slice)
+    {
+        double minX = double.MaxValue, maxX = double.MinValue, minY = double.MaxValue, maxY = double.MinValue;
+        foreach (var i in slice)
+        {
+            if (chart.Probes[i].Kind != ProbeKind.Grid) continue;
+            var c = chart.Probes[i].Center;
+            minX = Math.Min(minX, c.X); maxX = Math.Max(maxX, c.X);
+            minY = Math.Min(minY, c.Y); maxY = Math.Max(maxY, c.Y);
+        }
+        if (minX > maxX) return (1, 0, 0);
+        var half = (double)chart.GridSpacing / 2;
+        var cells = Math.Max(maxX - minX, maxY - minY) / chart.GridSpacing + 1;
+        return (cells <= MaxCellsPerSide ? 1 : (int)Math.Ceiling(cells / MaxCellsPerSide), minX - half, maxY + half);
+    }
+
+    /// <summary>
+    /// Each merged cell (counted from the layer's top-left corner, x right, y down) with its worst verdict:
+    /// 3 false pass, 2 false block, 1 both block, 0 both clear; in row order, so the bytes are the same every run.
+    /// </summary>
+    private static IEnumerable<((long X, long Y) Cell, int Verdict)> MergedCells(ObjectChart chart, int[] slice, bool[] answers, (int Merge, double Left, double Top) grid)
+    {
+        var cells = new Dictionary<(long X, long Y), int>();
+        foreach (var i in slice)
+        {
+            var p = chart.Probes[i];
+            if (p.Kind != ProbeKind.Grid) continue;
+            var key = ((long)Math.Floor((p.Center.X - grid.Left) / chart.GridSpacing) / grid.Merge,
+                       (long)Math.Floor((grid.Top - p.Center.Y) / chart.GridSpacing) / grid.Merge);
+            var verdict = (chart.Reference[i], answers[i]) switch { (true, false) => 3, (false, true) => 2, (true, true) => 1, _ => 0 };
+            cells[key] = Math.Max(cells.GetValueOrDefault(key), verdict);
+        }
+        return cells.OrderBy(c => c.Key.Y).ThenBy(c => c.Key.X).Select(c => (c.Key, c.Value));
+    }
+
+    private static readonly string[] MergedColours = [ChartPalette.AgreeClear, ChartPalette.AgreeBlocked, ChartPalette.FalseBlock, ChartPalette.FalsePass];
 
     private static string Colour(bool reference, bool model) => (reference, model) switch
     {
