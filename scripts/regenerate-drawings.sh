@@ -4,13 +4,7 @@
 # output is byte-identical on every run and machine, so a rerun leaves no git diff; tests fail when they drift.
 # Usage: scripts/regenerate-drawings.sh            (from anywhere; needs the .NET 10 SDK)
 set -euo pipefail
-cd "$(dirname "$0")/.."
-export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
-# The drawings come from the built-in sample, never from a dat the caller happens to have configured.
-unset ACSHADOW_DAT
-
-dotnet build src/AcShadow.Cli -c Release --nologo -v quiet -clp:ErrorsOnly
-acshadow=(dotnet src/AcShadow.Cli/bin/Release/net10.0/acshadow.dll)
+source "$(dirname "$0")/release-cli.sh"
 
 scene="$(mktemp -d "${TMPDIR:-/tmp}/acshadow-scene.XXXXXX")"
 trap 'rm -rf "$scene"' EXIT
