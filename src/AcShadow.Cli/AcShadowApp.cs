@@ -86,10 +86,14 @@ public static class AcShadowApp
         }
     }
 
+    /// <summary>Constants, so the last-resort line in Program needs no code of this class to run.</summary>
+    public const string CannotLoad = "cannot load part of acshadow itself";
+    public const string CannotLoadCause = "too few file descriptors (ulimit -n) or an incomplete installation";
+
     /// <summary>A failure of acshadow's own process rather than its input: which part could not load, and the likely cause.</summary>
     public static string Describe(Exception thrown) => Unwrap(thrown) switch
     {
-        var e when e is FileNotFoundException or FileLoadException => $"cannot load part of acshadow itself ({OneLine(e.Message)}): too few file descriptors (ulimit -n) or an incomplete installation",
+        var e when e is FileNotFoundException or FileLoadException => $"{CannotLoad} ({OneLine(e.Message)}): {CannotLoadCause}",
         var e when DescriptorsExhausted(e) => $"too few file descriptors: {OneLine(e.Message)} (raise the limit, e.g. `ulimit -n 1024`; acshadow needs about 100)",
         var e => $"internal error: {OneLine(e.Message)} (run with --verbose for the stack trace, and please report it)",
     };

@@ -17,7 +17,7 @@ try
 // acshadow's own assemblies (no file descriptors left, a broken install). One line, never a stack trace.
 catch (Exception e)
 {
-    var line = "acshadow: cannot load part of acshadow itself: too few file descriptors (ulimit -n) or an incomplete installation";
+    var line = $"acshadow: {AcShadowApp.CannotLoad}: {AcShadowApp.CannotLoadCause}";
     try
     {
         line = $"acshadow: {AcShadowApp.Describe(e)}";
