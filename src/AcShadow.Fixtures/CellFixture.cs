@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Fixtures.Cells;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Fixtures;
 
@@ -30,7 +31,7 @@ public sealed class CellFixture
     /// <summary>Loads <c>cells/0x%08X.cell.json</c> from a fixtures folder.</summary>
     public static CellFixture Load(string fixturesFolder, uint cellId)
     {
-        var path = Path.Combine(fixturesFolder, CellFileFormat.PathFor(cellId));
+        var path = Path.Combine(fixturesFolder, FileFormats.Cell.PathFor(cellId));
         if (!System.IO.File.Exists(path))
             throw new FileNotFoundException($"no cell file for 0x{cellId:X8} at {path}; generate it with `acshadow dump --cell 0x{cellId:X8} --cell-dat PATH --out {fixturesFolder}` or a landblock batch", path);
         try

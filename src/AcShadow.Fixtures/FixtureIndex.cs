@@ -1,6 +1,6 @@
 using System.Text.Json;
 using AcShadow.Fixtures.Batch;
-using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Fixtures;
@@ -17,16 +17,8 @@ public sealed record FixtureIndex(ShapePolicy Policy, float EntityScale, IReadOn
     public static FixtureIndex Read(string json)
     {
         using var doc = JsonDocument.Parse(json);
-        var root = doc.RootElement;
-        FormatCheck.Require(root, FileFormats.Index, "index.json");
-        var inputs = BspFileReader.Prop(root, "inputs");
-        var policyText = BspFileReader.Str(inputs, "policy");
-        if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"inputs.policy \"{policyText}\" is not retail or union");
-        var files = BspFileReader.Arr(root, "files").Select(f => new IndexedFile(
-            BspFileReader.Str(f, "path"), Kind(BspFileReader.Str(f, "kind")), BspFileReader.Str(f, "id"), BspFileReader.Str(f, "sha256"))).ToArray();
-        return new FixtureIndex(policy, BspFileReader.Float(inputs, "entityScale"), files);
+        FormatCheck.Require(doc.RootElement, FileFormats.Index, "index.json");
+        var body = IndexFileReader.Read(doc.RootElement, static (_, _, _) => 0);
+        return new FixtureIndex(body.Policy, body.EntityScale, body.Files);
     }
-
-    private static FixtureKind Kind(string name) =>
-        FixtureKinds.TryParse(name, out var kind) ? kind : throw new FormatException($"files: kind \"{name}\" is not a kind of file acshadow writes");
 }

@@ -1,8 +1,10 @@
 using System.Numerics;
 using System.Text.Json;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
+using static AcShadow.Fixtures.Json.JsonFields;
 
 namespace AcShadow.Fixtures;
 
@@ -17,28 +19,25 @@ public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePo
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
         FormatCheck.Require(root, FileFormats.Scene, "scene.json");
-        var policyText = BspFileReader.Str(root, "policy");
+        var policyText = Str(root, "policy");
         if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"policy \"{policyText}\" is not retail or union");
-        var objects = BspFileReader.Arr(root, "objects").Select(o =>
+        var objects = Arr(root, "objects").Select(o =>
         {
-            var frame = BspFileReader.Prop(o, "worldFrame");
-            var file = BspFileReader.Prop(o, "file");
+            var frame = Prop(o, "worldFrame");
+            var file = Prop(o, "file");
             var shapes = o.TryGetProperty("shapes", out var s) ? s.EnumerateArray().Select(ShadowFileReader.ReadShape).ToArray() : [];
-            return new ScenePlacement(BspFileReader.Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(BspFileReader.Str(o, "kind")),
-                BspFileReader.Vec(BspFileReader.Prop(frame, "origin")), BspFileReader.Quat(BspFileReader.Prop(frame, "orientation")),
+            return new ScenePlacement(Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(Str(o, "kind")),
+                Vec(Prop(frame, "origin")), Quat(Prop(frame, "orientation")),
                 file.ValueKind == JsonValueKind.Null ? null : file.GetString(), shapes);
         }).ToArray();
         var cells = root.TryGetProperty("cells", out var c)
             ? c.EnumerateArray().Select(e =>
             {
-                var file = BspFileReader.Prop(e, "file");
+                var file = Prop(e, "file");
                 return new SceneCellFile(Id(e, "id"), file.ValueKind == JsonValueKind.Null ? null : file.GetString());
             }).ToArray()
             : [];
-        return new FixtureScene(Id(root, "landblockId"), BspFileReader.Vec(BspFileReader.Prop(root, "worldOrigin")), policy,
-            BspFileReader.Float(root, "entityScale"), objects) { Cells = cells };
+        return new FixtureScene(Id(root, "landblockId"), Vec(Prop(root, "worldOrigin")), policy,
+            Float(root, "entityScale"), objects) { Cells = cells };
     }
-
-    private static uint Id(JsonElement e, string name) =>
-        JsonIds.TryParse(BspFileReader.Str(e, name), out var id) ? id : throw new FormatException($"{name} is not a hex id");
 }

@@ -1,3 +1,4 @@
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
@@ -19,8 +20,8 @@ public sealed class FixtureSet
     private FixtureSet(string folder)
     {
         Folder = folder;
-        _index = new(() => ReadOptional("index.json", FixtureIndex.Read));
-        _scene = new(() => ReadOptional("scene.json", FixtureScene.Read));
+        _index = new(() => ReadOptional(FileFormats.Index.Path, FixtureIndex.Read));
+        _scene = new(() => ReadOptional(FileFormats.Scene.Path, FixtureScene.Read));
     }
 
     public string Folder { get; }
@@ -59,7 +60,7 @@ public sealed class FixtureSet
     /// <summary>Every cell scene.json lists with a file: the landblock's interior.</summary>
     public IReadOnlyList<CellFixture> SceneCells()
     {
-        var scene = Scene ?? throw new FileNotFoundException($"{Path.Combine(Folder, "scene.json")} is missing; generate it with `acshadow batch --landblock 0xXXYY --cell-dat PATH --out {Folder}`");
+        var scene = Scene ?? throw new FileNotFoundException($"{Path.Combine(Folder, FileFormats.Scene.Path)} is missing; generate it with `acshadow batch --landblock 0xXXYY --cell-dat PATH --out {Folder}`");
         return scene.Cells.Where(c => c.File is not null).Select(c => Cell(c.Id)).ToArray();
     }
 
@@ -81,7 +82,7 @@ public sealed class FixtureSet
     /// <summary>Every object of scene.json that has a file, placed at its world frame.</summary>
     public IReadOnlyList<PlacedFixture> PlaceScene()
     {
-        var scene = Scene ?? throw new FileNotFoundException($"{Path.Combine(Folder, "scene.json")} is missing; generate it with `acshadow batch --landblock 0xXXYY --cell-dat PATH --out {Folder}`");
+        var scene = Scene ?? throw new FileNotFoundException($"{Path.Combine(Folder, FileFormats.Scene.Path)} is missing; generate it with `acshadow batch --landblock 0xXXYY --cell-dat PATH --out {Folder}`");
         var placed = new List<PlacedFixture>();
         foreach (var o in scene.Objects.Where(o => o.File is not null))
         {

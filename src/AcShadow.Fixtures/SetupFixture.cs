@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
@@ -38,16 +39,16 @@ public sealed class SetupFixture
     /// </summary>
     public static SetupFixture Load(string fixturesFolder, uint setupId)
     {
-        var shadowPath = Path.Combine(fixturesFolder, ShadowFileFormat.PathFor(setupId));
+        var shadowPath = Path.Combine(fixturesFolder, FileFormats.Shadow.PathFor(setupId));
         if (!File.Exists(shadowPath))
             throw new FileNotFoundException($"no shadow file for Setup {JsonIds.Format(setupId)} at {shadowPath}; generate it with `acshadow dump --setup {JsonIds.Format(setupId)} --out {fixturesFolder}`", shadowPath);
         var shapes = Read(shadowPath, ShadowFileReader.Read);
         var bsps = new SortedDictionary<uint, BspDump>();
         foreach (var id in shapes.Shapes.Where(s => s.CollisionType == CollisionType.Bsp && s.GfxObjId is not null).Select(s => s.GfxObjId!.Value).Distinct())
         {
-            var bspPath = Path.Combine(fixturesFolder, BspFileFormat.PathFor(id));
+            var bspPath = Path.Combine(fixturesFolder, FileFormats.Bsp.PathFor(id));
             if (!File.Exists(bspPath))
-                throw new FileNotFoundException($"{ShadowFileFormat.PathFor(setupId)} names GfxObj {JsonIds.Format(id)} but {bspPath} is missing; copy the whole output folder, not just setups/", bspPath);
+                throw new FileNotFoundException($"{FileFormats.Shadow.PathFor(setupId)} names GfxObj {JsonIds.Format(id)} but {bspPath} is missing; copy the whole output folder, not just setups/", bspPath);
             bsps[id] = Read(bspPath, BspFileReader.Read);
         }
         return new SetupFixture(shapes, bsps);

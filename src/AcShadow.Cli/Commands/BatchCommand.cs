@@ -1,7 +1,6 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
@@ -13,7 +12,9 @@ using AcShadow.Core.Poses;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Files;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Commands;
 
@@ -138,12 +139,12 @@ public static class BatchCommand
         // The state for the next --incremental run, then index.json, last: an index on disk only ever
         // describes files already written.
         if (incremental) Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
-        if (incremental) Write(BatchResult.IndexPath, result.IndexJson());
+        if (incremental) Write(FileFormats.Index.Path, result.IndexJson());
         else
         {
             // Streamed to its file: on a retail dat index.json is megabytes, and a buffer for it would be the
             // run's largest allocation, at its very end.
-            written += AtomicOutput.Write(outDir, BatchResult.IndexPath, result.WriteIndex);
+            written += AtomicOutput.Write(outDir, FileFormats.Index.Path, result.WriteIndex);
             filesWritten++;
         }
         folder.RequireStillInPlace();
@@ -156,7 +157,7 @@ public static class BatchCommand
             $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s){(result.Cells > 0 ? $", {result.Cells} cell(s)" : "")}"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, BatchResult.IndexPath)}"));
+            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, FileFormats.Index.Path)}"));
         foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
             o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}{(group.Count() > IdSummary.Shown ? " (all in index.json's skipped)" : "")}");
         if (result.Diagnostics.Diagnostics > 0)
@@ -187,32 +188,32 @@ public static class BatchCommand
         {
             if (NeedsCheck(relative)) candidates.Add((relative, ForeignFileGuard.JsonHead(format).ToArray()));
         }
-        foreach (var setup in plan.Setups) Consider(ShadowFileFormat.PathFor(setup.Id), ShadowFileFormat.Format);
+        foreach (var setup in plan.Setups) Consider(FileFormats.Shadow.PathFor(setup.Id), FileFormats.Shadow.Format);
         var gfxobjs = Path.Combine(outDir, "gfxobjs");
         if (Directory.Exists(gfxobjs))
             foreach (var file in Directory.EnumerateFiles(gfxobjs, "*.json").Order(StringComparer.Ordinal))
             {
                 var relative = "gfxobjs/" + Path.GetFileName(file);
-                if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, BspFileFormat.Format);
+                if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, FileFormats.Bsp.Format);
                 else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && NeedsCheck(relative))
                     candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
             }
-        if (plan.Scene is not null) Consider(SceneFileFormat.Path, SceneFileFormat.Format);
+        if (plan.Scene is not null) Consider(FileFormats.Scene.Path, FileFormats.Scene.Format);
         foreach (var cell in plan.Scene?.Cells ?? [])
         {
-            Consider(Fixtures.Cells.CellFileFormat.PathFor(cell.Id), Fixtures.Cells.CellFileFormat.Format);
-            var acdream = Fixtures.Cells.CellFileFormat.AcdreamPathFor(cell.Id);
+            Consider(FileFormats.Cell.PathFor(cell.Id), FileFormats.Cell.Format);
+            var acdream = FileFormats.AcdreamCell.PathFor(cell.Id);
             if (formats.HasFlag(OutputFormats.Acdream) && NeedsCheck(acdream))
                 candidates.Add((acdream, System.Text.Encoding.UTF8.GetBytes("{\n  \"CellId\": 0,\n")));
         }
-        Consider(BatchResult.IndexPath, BatchIndexFormat.Format);
+        Consider(FileFormats.Index.Path, FileFormats.Index.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
         ForeignFileGuard.Refuse(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
     }
 
     private static void RemoveIndex(string outDir)
     {
-        var index = Path.Combine(outDir, BatchResult.IndexPath);
+        var index = Path.Combine(outDir, FileFormats.Index.Path);
         try
         {
             if (FileKinds.Of(index) == FileKind.Regular) File.Delete(index);

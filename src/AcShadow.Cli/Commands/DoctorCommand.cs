@@ -4,6 +4,7 @@ using System.Reflection;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Core.Doctor;
+using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Cli.Commands;
 
@@ -41,7 +42,7 @@ public static class DoctorCommand
         console.Out.Write(DoctorReportWriter.Summary(report, dat.IsSample ? "the built-in synthetic sample" : "your dat"));
         if (output is null) return ExitCodes.Ok;
         ExplicitOutputFile.Write(output, DoctorReportWriter.Json(report), "doctor.json");
-        console.Out.WriteLine($"wrote {output} ({DoctorReport.Format}: ids, counts, hashes and verdicts only)");
+        console.Out.WriteLine($"wrote {output} ({FileFormats.Doctor.Format}: ids, counts, hashes and verdicts only)");
         return ExitCodes.Ok;
     }
 

@@ -9,6 +9,7 @@ using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
@@ -79,7 +80,7 @@ public static class DumpCommand
             var export = engine.ExportSetup(id);
             if (export is null) { problems[id] = SkippedItem.NotInDat; continue; }
             files.AddRange(export.Files);
-            setupFiles[id] = ShadowFileFormat.PathFor(id);
+            setupFiles[id] = FileFormats.Shadow.PathFor(id);
         }
         var scene = new LandblockScene((cellId & 0xFFFF0000u) | 0xFFFE, []);
         var cellExport = new CellExporter(engine).Export(envCell, scene, setupFiles, problems);

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;

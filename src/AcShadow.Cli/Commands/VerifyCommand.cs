@@ -1,10 +1,12 @@
 using System.CommandLine;
 using AcShadow.Cli.Infrastructure;
-using AcShadow.Files;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Shapes;
 using AcShadow.Core.Verify;
+using AcShadow.Files;
+using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Cli.Commands;
 
@@ -64,16 +66,16 @@ public static class VerifyCommand
     {
         if (!Directory.Exists(folder))
             throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} is not a folder: pass the folder `acshadow batch --out` wrote");
-        var path = Path.Combine(folder, BatchResult.IndexPath);
+        var path = Path.Combine(folder, FileFormats.Index.Path);
         if (FileKinds.Of(path, followLinks: true) == FileKind.Missing)
         {
             // A batch removes the old index before its first write and writes the new one last, so output
             // without an index is a run that was stopped (Ctrl-C, a kill, a failure) before it finished.
             if (HasOutput(folder))
-                throw new CliException(ExitCodes.Drift, $"--fixtures: {folder} is an incomplete run: it holds batch output but no {BatchResult.IndexPath} (the batch that wrote it was stopped before the end): run the batch again");
-            throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} has no {BatchResult.IndexPath}: pass a folder `acshadow batch --out` wrote");
+                throw new CliException(ExitCodes.Drift, $"--fixtures: {folder} is an incomplete run: it holds batch output but no {FileFormats.Index.Path} (the batch that wrote it was stopped before the end): run the batch again");
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} has no {FileFormats.Index.Path}: pass a folder `acshadow batch --out` wrote");
         }
-        var bytes = ReadFixture(folder, BatchResult.IndexPath);
+        var bytes = ReadFixture(folder, FileFormats.Index.Path);
         // An editor that saved index.json with a byte-order mark: said as such, not as "not an index".
         if (bytes.AsSpan().StartsWith("\uFEFF"u8))
             throw new CliException(ExitCodes.Usage, $"--fixtures: {path} starts with a UTF-8 byte-order mark (an editor added it; acshadow writes none): remove the mark or run the batch again");
@@ -96,8 +98,8 @@ public static class VerifyCommand
             var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
             if (!files.ContainsKey(relative) && FileKinds.Of(full, followLinks: true) != FileKind.Missing) files[relative] = ReadFixture(folder, relative);
         }
-        Add(BatchResult.IndexPath);
-        Add(Core.Scenes.SceneFileFormat.Path);
+        Add(FileFormats.Index.Path);
+        Add(FileFormats.Scene.Path);
         foreach (var sub in OutputFolders)
         {
             var dir = Path.Combine(folder, sub);

@@ -8,16 +8,17 @@ using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
-using AcShadow.Core.Scenes;
 using AcShadow.Core.Scenes.Compile;
+using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Core.View;
 using AcShadow.Files;
-using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;
 
@@ -150,7 +151,7 @@ public static partial class ViewCommand
         {
             if (!dumps.TryGetValue(id, out var dump))
             {
-                var path = Path.Combine(folder, BspFileFormat.PathFor(id));
+                var path = Path.Combine(folder, FileFormats.Bsp.PathFor(id));
                 dumps[id] = dump = File.Exists(path) ? ReadFixture(path, BspFileReader.Read) : null;
                 if (dump is null) console.Error.WriteLine($"warning: {JsonIds.Format(id)}: {path} is missing; its shapes are not drawn");
             }
@@ -160,13 +161,13 @@ public static partial class ViewCommand
         ViewSubject Setup(uint id)
         {
             if (subjects.TryGetValue(id, out var known)) return known;
-            var path = Path.Combine(folder, ShadowFileFormat.PathFor(id));
+            var path = Path.Combine(folder, FileFormats.Shadow.PathFor(id));
             if (!File.Exists(path))
                 throw new CliException(ExitCodes.NotInDat, $"--fixtures: no shadow file for Setup {JsonIds.Format(id)} ({path}): write it with `acshadow dump --setup {JsonIds.Format(id)} --out {folder}`");
             return subjects[id] = ReadFixture(path, json => ViewSubjects.FromShadowFile(json, Dump));
         }
 
-        var scenePath = Path.Combine(folder, SceneFileFormat.Path);
+        var scenePath = Path.Combine(folder, FileFormats.Scene.Path);
         // Nothing chosen: everything the folder holds, every Setup and the scene when there is one.
         var everything = ids.Length == 0 && landblock is null;
         if (everything)
@@ -177,13 +178,13 @@ public static partial class ViewCommand
                     .Select(n => JsonIds.TryParse(n, out var id) ? id : (uint?)null).OfType<uint>().Order().ToArray()
                 : [];
             if (ids.Length == 0 && !File.Exists(scenePath))
-                throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} holds no setups/*{ShadowSuffix} and no {SceneFileFormat.Path}: pass the folder `acshadow dump` or `batch` wrote");
+                throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} holds no setups/*{ShadowSuffix} and no {FileFormats.Scene.Path}: pass the folder `acshadow dump` or `batch` wrote");
         }
         var scenes = ids.Select(id => ViewSceneBuilder.ForSetup(Setup(id), failures)).ToList();
         if (landblock is not null || (everything && File.Exists(scenePath)))
         {
             if (!File.Exists(scenePath))
-                throw new CliException(ExitCodes.NotInDat, $"--fixtures: {folder} has no {SceneFileFormat.Path}: write it with `acshadow batch --landblock 0xXXYY --out {folder}`");
+                throw new CliException(ExitCodes.NotInDat, $"--fixtures: {folder} has no {FileFormats.Scene.Path}: write it with `acshadow batch --landblock 0xXXYY --out {folder}`");
             var text = ReadFixture(scenePath, t => t);
             var scene = ReadFixture(scenePath, FixtureScene.Read);
             if (landblock is { } lb && lb != scene.LandblockId)
@@ -213,9 +214,9 @@ public static partial class ViewCommand
         const string Fix = "pass the folder `acshadow scene --out` wrote";
         if (!Directory.Exists(folder))
             throw new CliException(ExitCodes.Usage, $"--scene: {folder} is not a folder: {Fix}");
-        var path = Path.Combine(folder, CompiledSceneFormat.Path);
+        var path = Path.Combine(folder, FileFormats.CompiledScene.Path);
         if (!File.Exists(path))
-            throw new CliException(ExitCodes.Usage, $"--scene: {folder} has no {CompiledSceneFormat.Path}: {Fix} (acshadow scene --landblock 0xXXYY --out {folder})");
+            throw new CliException(ExitCodes.Usage, $"--scene: {folder} has no {FileFormats.CompiledScene.Path}: {Fix} (acshadow scene --landblock 0xXXYY --out {folder})");
         var dumps = new Dictionary<string, BspDump>(StringComparer.Ordinal);
         BspDump Dump(string file)
         {

@@ -1,6 +1,7 @@
-using System.CommandLine;
 using System.CommandLine.Invocation;
+using System.CommandLine;
 using System.Reflection;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Conventions;

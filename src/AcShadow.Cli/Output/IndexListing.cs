@@ -1,5 +1,7 @@
 using AcShadow.Core.Batch;
+using AcShadow.Core.Formats;
 using AcShadow.Files;
+using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Cli.Output;
 
@@ -9,7 +11,7 @@ public static class IndexListing
     /// <summary>Empty when there is no index, it is not a regular file, or it is not an acshadow index.</summary>
     public static IReadOnlySet<string> Read(string root)
     {
-        var path = Path.Combine(root, BatchResult.IndexPath);
+        var path = Path.Combine(root, FileFormats.Index.Path);
         try
         {
             if (FileKinds.Of(path) != FileKind.Regular) return new HashSet<string>();

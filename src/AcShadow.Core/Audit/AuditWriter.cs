@@ -1,8 +1,10 @@
 using System.Text;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Reports;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Audit;
@@ -14,8 +16,6 @@ namespace AcShadow.Core.Audit;
 /// </summary>
 public static class AuditWriter
 {
-    public const string JsonFormat = AcShadow.Fixtures.FileFormats.Audit;
-
     public static string Write(AuditReport report, AuditFormat format, DatSourceInfo dat, BatchSelection selection) => format switch
     {
         AuditFormat.Table => Table(report),
@@ -61,7 +61,7 @@ public static class AuditWriter
     }
 
     public static JsonObj Json(AuditReport report, DatSourceInfo dat, BatchSelection selection) => new JsonObj()
-        .Add("format", JsonFormat)
+        .Add("format", FileFormats.Audit.Format)
         .Add("dat", BatchIndexWriter.Dat(dat))
         .Add("selection", selection.Describe())
         .Add("audited", report.Audited)

@@ -1,4 +1,5 @@
 using AcShadow.Core.Export;
+using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Core.Batch;
 
@@ -15,11 +16,9 @@ public sealed record BatchResult(
     int Scenes,
     DiagnosticCount Diagnostics)
 {
-    public const string IndexPath = "index.json";
-
     /// <summary>Every file including index.json (last), as written to disk.</summary>
     public IEnumerable<(string Path, ReadOnlyMemory<byte> Content)> AllFiles =>
-        Files.Select(f => (f.RelativePath, f.Content)).Append((IndexPath, IndexJson));
+        Files.Select(f => (f.RelativePath, f.Content)).Append((FileFormats.Index.Path, IndexJson));
 
     public long TotalBytes => Files.Sum(f => (long)f.Content.Length) + IndexJson.LongLength;
 }

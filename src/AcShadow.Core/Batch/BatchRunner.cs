@@ -6,6 +6,7 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Batch;
@@ -25,7 +26,7 @@ public static class BatchRunner
     {
         var files = new ConcurrentDictionary<string, OutputFile>(StringComparer.Ordinal);
         // A streamed file's bytes may be lent for the call only: the ones kept are copies.
-        var summary = Stream(dat, options, plan, inputs, jobs, f => files.TryAdd(f.RelativePath, f with { Content = f.Content.ToArray() }), null, progress, cancellation);
+        var summary = Stream(dat, options, plan, inputs, jobs, f => files.TryAdd(f.RelativePath, f with { Content = f.Content.ToArray(), Acdream = null }), null, progress, cancellation);
         var ordered = files.Values.OrderBy(f => f.RelativePath, StringComparer.Ordinal).ToArray();
         return new BatchResult(ordered, summary.IndexJson(), summary.Skipped, summary.SetupsWritten, summary.BspDumps, summary.Scenes, summary.Diagnostics);
     }
@@ -77,7 +78,7 @@ public static class BatchRunner
                 continue;
             }
             foreach (var file in outcome.Files) files[file.RelativePath] = file;
-            setupFiles[planned.Id] = ShadowFileFormat.PathFor(planned.Id);
+            setupFiles[planned.Id] = FileFormats.Shadow.PathFor(planned.Id);
             diagnostics += outcome.Record.Diagnostics;
             if (outcome.Record.Diagnostics > 0) withDiagnostics++;
             if (outcome.Reused) reused++;

@@ -1,4 +1,5 @@
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Fixtures.Batch;
 
 namespace AcShadow.Core.Batch;

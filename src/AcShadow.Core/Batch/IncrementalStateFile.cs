@@ -1,5 +1,6 @@
 using System.Text.Json;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Json;

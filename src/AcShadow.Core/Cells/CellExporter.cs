@@ -1,11 +1,13 @@
 using AcShadow.Core.Batch;
-using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
@@ -40,11 +42,13 @@ public sealed class CellExporter(ExportEngine engine)
         var physics = geometry.Physics with { GfxObjId = cell.Id };
         diagnostics.AddRange(physics.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)));
         var portals = new JsonArr();
+        var portalRecords = new List<CellPortalRecord>(cell.Portals.Count);
         for (var i = 0; i < cell.Portals.Count; i++)
         {
             var portal = cell.Portals[i];
             var (vertices, plane, portalProblem) = geometry.Portal(portal.PolygonId);
             if (portalProblem is not null) diagnostics.Add(new Diagnostic("portal-polygon", $"EnvCell {JsonIds.Format(cell.Id)} portal {i}: {portalProblem}"));
+            portalRecords.Add(new CellPortalRecord(i, (ushort)portal.Flags, portal.PolygonId, cell.Sibling(portal.OtherCellId), portal.OtherPortalId, vertices, plane));
             portals.Add(new JsonObj()
                 .Add("index", i)
                 .Add("flags", (int)portal.Flags)
@@ -73,7 +77,7 @@ public sealed class CellExporter(ExportEngine engine)
         foreach (var (name, value) in tree.Members)
             if (name is not ("format" or "gfxObjId" or "diagnostics")) body.Add(name, value);
         var json = new JsonObj()
-            .Add("format", CellFileFormat.Format)
+            .Add("format", FileFormats.Cell.Format)
             .Add("cellId", JsonIds.Format(cell.Id))
             .Add("landblockId", JsonIds.Format(scene.LandBlockInfoId))
             .Add("environmentId", JsonIds.Format(cell.EnvironmentFileId))
@@ -89,7 +93,11 @@ public sealed class CellExporter(ExportEngine engine)
             .Add("visibleCells", JsonArr.Of(cell.VisibleCells.Select(v => JsonIds.Format(cell.Sibling(v)))))
             .Add("objects", objects)
             .Add("diagnostics", JsonArr.Of(diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
-        var file = new OutputFile(CellFileFormat.PathFor(cell.Id), FixtureKind.Cell, cell.Id, CanonicalJsonWriter.WriteUtf8(json), cell.StaticObjects.Count, physics.Polygons.Count);
+        var visible = cell.VisibleCells.Select(cell.Sibling).ToArray();
+        var file = new OutputFile(FileFormats.Cell.PathFor(cell.Id), FixtureKind.Cell, cell.Id, CanonicalJsonWriter.WriteUtf8(json), cell.StaticObjects.Count, physics.Polygons.Count)
+        {
+            Acdream = () => AcdreamCellWriter.File(cell.Id, cell.Position, physics, portalRecords, visible),
+        };
         return new CellExport(cell.Id, file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
             bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray(), diagnostics, cell.StaticObjects.Count);
     }

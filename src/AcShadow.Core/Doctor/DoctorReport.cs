@@ -3,8 +3,6 @@ namespace AcShadow.Core.Doctor;
 /// <summary>Everything `acshadow doctor` found: the dats' shape (sizes, counts) and one entry per check.</summary>
 public sealed record DoctorReport(string ToolVersion, DoctorDatFacts Portal, DoctorDatFacts? Cell, IReadOnlyList<DoctorCheck> Checks)
 {
-    public const string Format = AcShadow.Fixtures.FileFormats.Doctor;
-
     public int Count(DoctorVerdict verdict) => Checks.Count(c => c.Verdict == verdict);
 
     public DoctorCheck Check(string key) => Checks.First(c => c.Key == key);

@@ -1,13 +1,13 @@
 using System.Globalization;
 using System.Text;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Doctor;
 
 /// <summary>
-/// The doctor report as JSON (format <see cref="DoctorReport.Format"/>, schema
-/// schemas/acshadow.doctor-1.schema.json) and as the one-screen summary the command prints. Both hold only
+/// The doctor report as JSON (<see cref="FileFormats.Doctor"/>) and as the one-screen summary the command prints. Both hold only
 /// ids, counts, hashes, verdicts and fixed text. LF line ends, invariant culture.
 /// </summary>
 public static class DoctorReportWriter
@@ -15,7 +15,7 @@ public static class DoctorReportWriter
     public static byte[] Json(DoctorReport report)
     {
         var root = new JsonObj()
-            .Add("format", DoctorReport.Format)
+            .Add("format", FileFormats.Doctor.Format)
             .Add("toolVersion", report.ToolVersion)
             .Add("dat", Facts(report.Portal))
             .Add("cellDat", report.Cell is null ? JsonNull.Value : Facts(report.Cell))

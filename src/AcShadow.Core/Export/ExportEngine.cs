@@ -1,10 +1,12 @@
 using System.Collections.Concurrent;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
@@ -34,7 +36,7 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
         if (setup is null) return null;
         var motions = new Poses.MotionReads(Dat);
         var set = ShadowShapeBuilder.Build(setup, Dat.ReadGfxObj, Options, motions);
-        var shadow = new OutputFile(ShadowFileFormat.PathFor(setupId), FixtureKind.Shadow, setupId,
+        var shadow = new OutputFile(FileFormats.Shadow.PathFor(setupId), FixtureKind.Shadow, setupId,
             ShadowFileWriter.Write(setup, set), set.Shapes.Count, 0);
         var diagnostics = new List<Diagnostic>(set.Diagnostics);
         var bspFiles = new List<OutputFile>();
@@ -64,12 +66,14 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
     {
         var dump = ExtractBsp(id);
         if (dump is null) return new BspDumpResult(null, null, [], []);
-        var path = BspFileFormat.PathFor(id);
+        var path = FileFormats.Bsp.PathFor(id);
+        OutputFile Acdream() => AcdreamGfxObjWriter.File(id, dump);
         var diagnostics = dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray();
         if (bspSink is null)
-            return new BspDumpResult(new OutputFile(path, FixtureKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count), path, [], diagnostics);
+            return new BspDumpResult(new OutputFile(path, FixtureKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count) { Acdream = Acdream },
+                path, [], diagnostics);
         // The sink writes and hashes the dump at once, so its bytes are lent, never copied into an array.
-        var entries = BspFileWriter.Lend(dump, content => bspSink(new OutputFile(path, FixtureKind.Bsp, id, content, 0, dump.Polygons.Count)));
+        var entries = BspFileWriter.Lend(dump, content => bspSink(new OutputFile(path, FixtureKind.Bsp, id, content, 0, dump.Polygons.Count) { Acdream = Acdream }));
         return new BspDumpResult(null, path, entries, diagnostics);
     }
 }

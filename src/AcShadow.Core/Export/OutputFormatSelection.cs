@@ -1,14 +1,15 @@
-using System.Text;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Export;
 
 /// <summary>
 /// Turns a run's canonical files into the files the chosen formats ask for: the canonical ones as they are,
-/// and for each BSP dump its acdream GfxObj file, for each cell file its acdream cell file. The acdream file is made from the canonical file's own
-/// bytes (read back losslessly), so both formats always say the same thing.
+/// and for each BSP dump and cell file its acdream file, written from the same in-memory records as the
+/// canonical file, so both formats always say the same thing.
 /// </summary>
 public static class OutputFormatSelection
 {
@@ -22,18 +23,7 @@ public static class OutputFormatSelection
         if (formats == OutputFormats.Canonical) return [canonical];
         var result = new List<OutputFile>(2);
         if (formats.HasFlag(OutputFormats.Canonical)) result.Add(canonical);
-        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == FixtureKind.Bsp)
-        {
-            var dump = BspFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
-            result.Add(new OutputFile(AcdreamGfxObjFormat.PathFor(canonical.Id), FixtureKind.AcdreamGfxObj, canonical.Id,
-                AcdreamGfxObjWriter.Write(dump), 0, AcdreamGfxObjWriter.PolygonCount(dump)));
-        }
-        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Kind == FixtureKind.Cell)
-        {
-            var cell = Fixtures.Cells.CellFileReader.Read(Encoding.UTF8.GetString(canonical.Content.Span));
-            result.Add(new OutputFile(Fixtures.Cells.CellFileFormat.AcdreamPathFor(canonical.Id), FixtureKind.AcdreamCell, canonical.Id,
-                AcdreamCellWriter.Write(cell), 0, AcdreamCellWriter.PolygonCount(cell)));
-        }
+        if (formats.HasFlag(OutputFormats.Acdream) && canonical.Acdream is { } acdream) result.Add(acdream());
         return result;
     }
 }

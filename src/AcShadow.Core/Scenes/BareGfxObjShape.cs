@@ -1,6 +1,8 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
@@ -19,7 +21,7 @@ public static class BareGfxObjShape
 
     /// <summary>The shapes array as the shadow file writes it, each BSP reference relative to the scene file (the folder root).</summary>
     public static JsonNode ShapesJson(GfxObj gfx, ShadowShapeSet set) =>
-        ShadowFileWriter.ToJson(OnePartSetup(gfx), set, id => BspFileFormat.PathFor(id))
+        ShadowFileWriter.ToJson(OnePartSetup(gfx), set, id => FileFormats.Bsp.PathFor(id))
             .Members.First(m => m.Key == "shapes").Value;
 
     /// <summary>The flag agrees with the part, so the builder reports no mismatch that the dat never stored.</summary>

@@ -5,9 +5,10 @@ using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Fixtures.Scenes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Scenes;
 
@@ -37,7 +38,7 @@ public static class SceneExporter
 
         var coordinates = scene.Coordinates;
         var json = new JsonObj()
-            .Add("format", SceneFileFormat.Format)
+            .Add("format", FileFormats.Scene.Format)
             .Add("landblockId", JsonIds.Format(scene.LandBlockInfoId))
             .Add("landblock", new JsonObj().Add("x", coordinates.X).Add("y", coordinates.Y))
             .Add("worldOrigin", new JsonArr().Add(JsonNum.Of(coordinates.WorldOriginX)).Add(JsonNum.Of(coordinates.WorldOriginY)).Add(JsonNum.Of(0)))
@@ -51,7 +52,7 @@ public static class SceneExporter
                 .Add("unresolved", unresolved))
             .Add("objects", objects)
             .Add("cells", JsonArr.Of(CellEntries(scene, cells ?? []), c => c));
-        var file = new OutputFile(SceneFileFormat.Path, FixtureKind.Scene, scene.LandBlockInfoId,
+        var file = new OutputFile(FileFormats.Scene.Path, FixtureKind.Scene, scene.LandBlockInfoId,
             CanonicalJsonWriter.WriteUtf8(json), 0, 0);
         return new SceneExport(file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
             bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray());
@@ -81,7 +82,7 @@ public static class SceneExporter
         var (wx, wy, wz) = WorldFrame.Origin(scene.Coordinates, placed.Frame);
         var json = new JsonObj()
             .Add("index", placed.Index)
-            .Add("placedBy", SceneFileFormat.PlacedByName(placed.PlacedBy))
+            .Add("placedBy", placed.PlacedBy.Name())
             .Add("placedIndex", placed.PlacedIndex)
             .Add("id", JsonIds.Format(placed.Id))
             .Add("kind", placed.Kind.Name())

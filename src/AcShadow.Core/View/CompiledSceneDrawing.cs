@@ -2,10 +2,11 @@ using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Scenes.Compile;
-using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures;
 
 namespace AcShadow.Core.View;
 
@@ -37,8 +38,8 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
         if (root.ValueKind != JsonValueKind.Object)
             throw new FormatException("not a JSON object");
         var format = root.TryGetProperty("format", out var f) && f.ValueKind == JsonValueKind.String ? f.GetString() : null;
-        if (format != FileFormats.CompiledScene)
-            throw new FormatException($"its format is {(format is null ? "missing" : $"\"{format}\"")}, not \"{FileFormats.CompiledScene}\" (a file `acshadow scene` writes)");
+        if (format != FileFormats.CompiledScene.Format)
+            throw new FormatException($"its format is {(format is null ? "missing" : $"\"{format}\"")}, not \"{FileFormats.CompiledScene.Format}\" (a file `acshadow scene` writes)");
         var landblock = Id(root, "landblockId");
         var origin = Prop(root, "worldOrigin");
         var worldOrigin = new Vector3(Float(origin[0]), Float(origin[1]), Float(origin[2]));
@@ -116,7 +117,7 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
                 return ShapeTessellation.Solid(name, pose, new ConvexPolytope(vertices, faces));
             case "bsp":
                 var gfxObj = Id(s, "gfxObjId");
-                return ShapeTessellation.Polygons(name, pose, Dump(bspFile, Prop(s, "file").GetString()!, BspFileFormat.PathFor(gfxObj), gfxObj, source));
+                return ShapeTessellation.Polygons(name, pose, Dump(bspFile, Prop(s, "file").GetString()!, FileFormats.Bsp.PathFor(gfxObj), gfxObj, source));
             default:
                 throw new FormatException($"{source}: shape type \"{type}\" is not sphere, cylinder, box, hull or bsp");
         }

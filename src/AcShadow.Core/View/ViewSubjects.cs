@@ -3,10 +3,11 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Chart.Models;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
-using AcShadow.Core.Scenes;
 using AcShadow.Core.Poses;
+using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 

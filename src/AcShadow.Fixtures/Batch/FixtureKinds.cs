@@ -1,16 +1,20 @@
+using AcShadow.Fixtures.Formats;
+
 namespace AcShadow.Fixtures.Batch;
 
-/// <summary>The names index.json gives a <see cref="FixtureKind"/>.</summary>
+/// <summary>The names index.json gives a <see cref="FixtureKind"/>: its format's short name.</summary>
 public static class FixtureKinds
 {
-    public static string Name(this FixtureKind kind) => kind switch
+    public static string Name(this FixtureKind kind) => kind.Format().Name;
+
+    internal static FileFormat Format(this FixtureKind kind) => kind switch
     {
-        FixtureKind.Shadow => "shadow",
-        FixtureKind.Bsp => "bsp",
-        FixtureKind.Scene => "scene",
-        FixtureKind.AcdreamGfxObj => "acdream",
-        FixtureKind.Cell => "cell",
-        FixtureKind.AcdreamCell => "acdream-cell",
+        FixtureKind.Shadow => FileFormats.Shadow,
+        FixtureKind.Bsp => FileFormats.Bsp,
+        FixtureKind.Scene => FileFormats.Scene,
+        FixtureKind.AcdreamGfxObj => FileFormats.AcdreamGfxObj,
+        FixtureKind.Cell => FileFormats.Cell,
+        FixtureKind.AcdreamCell => FileFormats.AcdreamCell,
         _ => throw new ArgumentOutOfRangeException(nameof(kind)),
     };
 

@@ -10,5 +10,8 @@ namespace AcShadow.Fixtures.Cells;
 public sealed record CellPortalRecord(int Index, ushort Flags, ushort PolygonId, uint OtherCellId, ushort OtherPortalId,
     IReadOnlyList<Vector3> Vertices, Plane? Plane)
 {
-    public bool LeadsOutside => (OtherCellId & 0xFFFF) == CellFileFormat.Outside;
+    /// <summary>The low 16 bits of <see cref="OtherCellId"/> for a portal that leads outdoors.</summary>
+    public const ushort Outside = 0xFFFF;
+
+    public bool LeadsOutside => (OtherCellId & 0xFFFF) == Outside;
 }

@@ -2,7 +2,9 @@ using System.Numerics;
 using System.Text.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
+using static AcShadow.Fixtures.Json.JsonFields;
 
 namespace AcShadow.Fixtures.Scenes;
 
@@ -41,7 +43,7 @@ public sealed class CompiledScene
     /// <summary>Loads <c>compiled-scene.json</c> from a folder <c>acshadow scene --out</c> wrote, with the BSP dumps it names.</summary>
     public static CompiledScene Load(string folder)
     {
-        var path = Path.Combine(folder, "compiled-scene.json");
+        var path = Path.Combine(folder, FileFormats.CompiledScene.Path);
         if (!File.Exists(path))
             throw new FileNotFoundException($"{path} is missing; generate it with `acshadow scene --landblock 0xXXYY --out {folder}`", path);
         try
@@ -67,35 +69,35 @@ public sealed class CompiledScene
         var trees = new Dictionary<string, ISphereOverlap>(StringComparer.Ordinal);
         var objects = new List<CompiledObject>();
         var queries = new List<PlacedQuery>();
-        foreach (var o in BspFileReader.Arr(root, "objects"))
+        foreach (var o in Arr(root, "objects"))
         {
-            var frame = BspFileReader.Prop(o, "landblockFrame");
-            var position = BspFileReader.Vec(BspFileReader.Prop(frame, "origin"));
-            var rotation = BspFileReader.Quat(BspFileReader.Prop(frame, "orientation"));
-            var model = BspFileReader.Prop(o, "model");
-            var shapes = BspFileReader.Arr(o, "shapes").Select(s => Shape(s, trees, bspFile)).ToArray();
-            var id = JsonIds.TryParse(BspFileReader.Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
-            var index = BspFileReader.Int(o, "index");
+            var frame = Prop(o, "landblockFrame");
+            var position = Vec(Prop(frame, "origin"));
+            var rotation = Quat(Prop(frame, "orientation"));
+            var model = Prop(o, "model");
+            var shapes = Arr(o, "shapes").Select(s => Shape(s, trees, bspFile)).ToArray();
+            var id = JsonIds.TryParse(Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
+            var index = Int(o, "index");
             var cellId = o.TryGetProperty("cellId", out var c) && c.ValueKind == JsonValueKind.String
                 ? JsonIds.TryParse(c.GetString()!, out var parsedCell) ? parsedCell : throw new FormatException("cellId is not a hex id")
                 : (uint?)null;
-            objects.Add(new CompiledObject(index, id, SceneObjectKinds.Parse(BspFileReader.Str(o, "kind")), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
-            var bound = BspFileReader.Prop(o, "bound");
+            objects.Add(new CompiledObject(index, id, SceneObjectKinds.Parse(Str(o, "kind")), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
+            var bound = Prop(o, "bound");
             if (shapes.Length == 0 || bound.ValueKind == JsonValueKind.Null) continue;
             queries.Add(new PlacedQuery(index, id, position, rotation, new AnyOverlap(shapes),
-                BspFileReader.Vec(BspFileReader.Prop(bound, "center")), BspFileReader.Float(bound, "radius")));
+                Vec(Prop(bound, "center")), Float(bound, "radius")));
         }
         var cells = new List<CompiledCell>();
         var cellQueries = new List<SceneCell>();
-        foreach (var e in root.TryGetProperty("cells", out _) ? BspFileReader.Arr(root, "cells") : [])
+        foreach (var e in root.TryGetProperty("cells", out _) ? Arr(root, "cells") : [])
         {
-            var cellId = JsonIds.TryParse(BspFileReader.Str(e, "cellId"), out var parsed) ? parsed : throw new FormatException("cellId is not a hex id");
-            var frame = BspFileReader.Prop(e, "landblockFrame");
-            var position = BspFileReader.Vec(BspFileReader.Prop(frame, "origin"));
-            var rotation = BspFileReader.Quat(BspFileReader.Prop(frame, "orientation"));
-            var file = BspFileReader.Prop(e, "file");
+            var cellId = JsonIds.TryParse(Str(e, "cellId"), out var parsed) ? parsed : throw new FormatException("cellId is not a hex id");
+            var frame = Prop(e, "landblockFrame");
+            var position = Vec(Prop(frame, "origin"));
+            var rotation = Quat(Prop(frame, "orientation"));
+            var file = Prop(e, "file");
             if (file.ValueKind == JsonValueKind.Null) continue;
-            cells.Add(new CompiledCell(cellId, BspFileReader.Str(e, "model"), position, rotation));
+            cells.Add(new CompiledCell(cellId, Str(e, "model"), position, rotation));
             try
             {
                 cellQueries.Add(new SceneCell(cellId, new CellOverlapQuery(bspFile(file.GetString()!), position, rotation)));
@@ -105,31 +107,31 @@ public sealed class CompiledScene
                 throw new FormatException($"cell {JsonIds.Format(cellId)}: {ex.Message}", ex);
             }
         }
-        var landblock = JsonIds.TryParse(BspFileReader.Str(root, "landblockId"), out var lb) ? lb : throw new FormatException("landblockId is not a hex id");
-        var radii = BspFileReader.Arr(root, "moverRadii").Select(BspFileReader.Number).ToArray();
-        return new CompiledScene(landblock, radii, BspFileReader.Prop(root, "tolerancePercent").GetDouble(), objects, cells, new SceneQuery(queries, cellQueries));
+        var landblock = JsonIds.TryParse(Str(root, "landblockId"), out var lb) ? lb : throw new FormatException("landblockId is not a hex id");
+        var radii = Arr(root, "moverRadii").Select(Number).ToArray();
+        return new CompiledScene(landblock, radii, Prop(root, "tolerancePercent").GetDouble(), objects, cells, new SceneQuery(queries, cellQueries));
     }
 
     private static ISphereOverlap Shape(JsonElement s, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
     {
-        var type = BspFileReader.Str(s, "type");
+        var type = Str(s, "type");
         switch (type)
         {
             case "sphere":
-                var center = BspFileReader.Vec(BspFileReader.Prop(s, "center"));
-                var r = BspFileReader.Float(s, "radius");
+                var center = Vec(Prop(s, "center"));
+                var r = Float(s, "radius");
                 return new SphereShape(center, r);
             case "cylinder":
-                return new CylinderShape(BspFileReader.Vec(BspFileReader.Prop(s, "base")), BspFileReader.Float(s, "radius"), BspFileReader.Float(s, "height"));
+                return new CylinderShape(Vec(Prop(s, "base")), Float(s, "radius"), Float(s, "height"));
         }
-        var pose = BspFileReader.Prop(s, "pose");
-        var partPose = new PartPose(BspFileReader.Vec(BspFileReader.Prop(pose, "position")), BspFileReader.Quat(BspFileReader.Prop(pose, "orientation")), BspFileReader.Float(pose, "scale"));
+        var pose = Prop(s, "pose");
+        var partPose = new PartPose(Vec(Prop(pose, "position")), Quat(Prop(pose, "orientation")), Float(pose, "scale"));
         ISphereOverlap part = type switch
         {
-            "box" => new BoxSphereQuery(new OrientedBox(BspFileReader.Vec(BspFileReader.Prop(s, "center")), BspFileReader.Quat(BspFileReader.Prop(s, "axes")),
-                BspFileReader.Vec(BspFileReader.Prop(s, "halfExtents")))),
+            "box" => new BoxSphereQuery(new OrientedBox(Vec(Prop(s, "center")), Quat(Prop(s, "axes")),
+                Vec(Prop(s, "halfExtents")))),
             "hull" => Hull(s),
-            "bsp" => Tree(BspFileReader.Str(s, "file"), trees, bspFile),
+            "bsp" => Tree(Str(s, "file"), trees, bspFile),
             _ => throw new FormatException($"shape type \"{type}\" is not sphere, cylinder, box, hull or bsp"),
         };
         return new PosedQuery(partPose, part);
@@ -137,12 +139,12 @@ public sealed class CompiledScene
 
     private static ConvexPolytope Hull(JsonElement s)
     {
-        var vertices = BspFileReader.Arr(s, "vertices").Select(BspFileReader.Vec).ToArray();
-        var faces = BspFileReader.Arr(s, "faces").Select((f, i) =>
+        var vertices = Arr(s, "vertices").Select(Vec).ToArray();
+        var faces = Arr(s, "faces").Select((f, i) =>
         {
-            var corners = BspFileReader.Arr(f, "vertices").Select(e => e.GetInt32()).ToArray();
+            var corners = Arr(f, "vertices").Select(e => e.GetInt32()).ToArray();
             if (corners.Length < 3 || corners.Any(c => c < 0 || c >= vertices.Length)) throw new FormatException($"hull face {i}: vertex indices must name at least 3 of the hull's vertices");
-            return new CompiledPolygon(i, new Plane(BspFileReader.Vec(BspFileReader.Prop(f, "normal")), BspFileReader.Float(f, "d")), corners.Select(c => vertices[c]).ToArray());
+            return new CompiledPolygon(i, new Plane(Vec(Prop(f, "normal")), Float(f, "d")), corners.Select(c => vertices[c]).ToArray());
         }).ToArray();
         return new ConvexPolytope(vertices, faces);
     }

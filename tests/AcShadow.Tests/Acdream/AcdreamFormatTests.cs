@@ -4,6 +4,7 @@ using System.Text.Json;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Tests.Support;
 
@@ -27,9 +28,9 @@ public class AcdreamFormatTests
 
         foreach (var id in new uint[] { 0x010044B5, 0x010044B6 })
         {
-            var gfx = JsonSerializer.Deserialize(File.ReadAllBytes(Path.Combine(outDir.Path, AcdreamGfxObjFormat.PathFor(id))), AcdreamJson.Default.GfxObjFixture)!;
+            var gfx = JsonSerializer.Deserialize(File.ReadAllBytes(Path.Combine(outDir.Path, FileFormats.AcdreamGfxObj.PathFor(id))), AcdreamJson.Default.GfxObjFixture)!;
             Assert.Equal(id, gfx.GfxObjId);
-            var canonical = BspFileReader.Read(File.ReadAllText(Path.Combine(CommittedFixtures, BspFileFormat.PathFor(id))));
+            var canonical = BspFileReader.Read(File.ReadAllText(Path.Combine(CommittedFixtures, FileFormats.Bsp.PathFor(id))));
             Assert.Equal(canonical.BoundingSphere.Center, Vec(gfx.BoundingSphereOrigin));
             Assert.Equal(canonical.BoundingSphere.Radius, gfx.BoundingSphereRadius);
             Assert.Equal(canonical.Polygons.Where(p => p.Plane is not null).Select(p => p.Id), gfx.ResolvedPolygons.Select(p => (int)p.Id));

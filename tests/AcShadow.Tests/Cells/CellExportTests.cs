@@ -1,12 +1,13 @@
 using System.Numerics;
-using System.Text.Json;
 using System.Text.Json.Serialization;
+using System.Text.Json;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
-using AcShadow.Fixtures;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Scenes;
+using AcShadow.Fixtures;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Cells;
@@ -35,7 +36,7 @@ public class CellExportTests
 
         var set = FixtureSet.Open(dir.Path);
         Assert.Equal([GroundFloor, Cellar], set.Scene!.Cells.Select(c => c.Id));
-        Assert.Equal([CellFileFormat.PathFor(GroundFloor), CellFileFormat.PathFor(Cellar)], set.Scene.Cells.Select(c => c.File));
+        Assert.Equal([FileFormats.Cell.PathFor(GroundFloor), FileFormats.Cell.PathFor(Cellar)], set.Scene.Cells.Select(c => c.File));
         using var index = JsonDocument.Parse(File.ReadAllText(Path.Combine(dir.Path, "index.json")));
         var kinds = index.RootElement.GetProperty("files").EnumerateArray().Select(f => f.GetProperty("kind").GetString()).ToArray();
         Assert.Equal(2, kinds.Count(k => k == "cell"));
@@ -107,8 +108,8 @@ public class CellExportTests
     {
         using var dir = new TempDir();
         Assert.Equal(0, CliRun.Of("dump", "--cell", "0xA9B40100", "--format", "both", "--out", dir.Path).ExitCode);
-        var dump = JsonSerializer.Deserialize(File.ReadAllBytes(Path.Combine(dir.Path, CellFileFormat.AcdreamPathFor(GroundFloor))), AcdreamCellJson.Default.CellDump)!;
-        var canonical = CellFileReader.Read(File.ReadAllText(Path.Combine(dir.Path, CellFileFormat.PathFor(GroundFloor))));
+        var dump = JsonSerializer.Deserialize(File.ReadAllBytes(Path.Combine(dir.Path, FileFormats.AcdreamCell.PathFor(GroundFloor))), AcdreamCellJson.Default.CellDump)!;
+        var canonical = CellFileReader.Read(File.ReadAllText(Path.Combine(dir.Path, FileFormats.Cell.PathFor(GroundFloor))));
         Assert.Equal(GroundFloor, dump.CellId);
         var world = dump.WorldTransform.ToMatrix();
         var inverse = dump.InverseWorldTransform.ToMatrix();
@@ -144,11 +145,11 @@ public class CellExportTests
     {
         using var dir = new TempDir();
         Assert.Equal(0, CliRun.Of("batch", "--landblock", "0xA9B4", "--out", dir.Path, "--quiet").ExitCode);
-        var path = Path.Combine(dir.Path, CellFileFormat.PathFor(Cellar));
+        var path = Path.Combine(dir.Path, FileFormats.Cell.PathFor(Cellar));
         File.WriteAllText(path, File.ReadAllText(path).Replace("\"seenOutside\": false", "\"seenOutside\": true"));
         var run = CliRun.Of("verify", "--fixtures", dir.Path);
         Assert.Equal(5, run.ExitCode);
-        Assert.Contains($"changed {CellFileFormat.PathFor(Cellar)}", run.Out);
+        Assert.Contains($"changed {FileFormats.Cell.PathFor(Cellar)}", run.Out);
     }
 
     [Theory]

@@ -1,8 +1,9 @@
 using System.CommandLine;
-using AcShadow.Cli;
-using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Commands;
 using AcShadow.Cli.Conventions;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Support;
 

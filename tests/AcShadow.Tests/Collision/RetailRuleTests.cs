@@ -1,10 +1,12 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Forge.Bsp;

@@ -3,6 +3,7 @@ using System.Text.Json;
 using System.Text.RegularExpressions;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Doctor;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Doctor;
@@ -20,7 +21,7 @@ public sealed class DoctorCommandTests
 
         Assert.Equal(0, run.ExitCode);
         using var doc = JsonDocument.Parse(File.ReadAllText(file));
-        Assert.Equal(DoctorReport.Format, doc.RootElement.GetProperty("format").GetString());
+        Assert.Equal(FileFormats.Doctor.Format, doc.RootElement.GetProperty("format").GetString());
         var checks = doc.RootElement.GetProperty("checks").EnumerateArray().ToArray();
         Assert.True(checks.Length >= 14);
         foreach (var check in checks)

@@ -6,6 +6,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 using AcShadow.Tests.Support;

@@ -1,7 +1,8 @@
 using System.Diagnostics;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Files;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Json;
 using AcShadow.Forge;
 using AcShadow.Tests.Support;
 

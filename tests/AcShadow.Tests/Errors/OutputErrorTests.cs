@@ -1,4 +1,5 @@
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Tests.Support;
 

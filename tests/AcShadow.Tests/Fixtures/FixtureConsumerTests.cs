@@ -2,6 +2,7 @@ using System.Numerics;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
@@ -21,12 +22,12 @@ public class FixtureConsumerTests
     public void Shadow_file_and_bsp_dumps_answer_like_the_dat(uint setupId)
     {
         var fixtures = CommittedFixturesTests.RepositoryFixtures();
-        var shadowPath = Path.Combine(fixtures, ShadowFileFormat.PathFor(setupId));
+        var shadowPath = Path.Combine(fixtures, FileFormats.Shadow.PathFor(setupId));
         var fromJson = ShadowFileReader.Read(File.ReadAllText(shadowPath));
         var dumps = fromJson.Shapes.Where(s => s.GfxObjId is not null && s.CollisionType == CollisionType.Bsp)
             .Select(s => s.GfxObjId!.Value).Distinct()
             .ToDictionary(id => id, id => CompiledBsp.Compile(BspFileReader.Read(
-                File.ReadAllText(Path.Combine(fixtures, BspFileFormat.PathFor(id))))));
+                File.ReadAllText(Path.Combine(fixtures, FileFormats.Bsp.PathFor(id))))));
         var consumer = ObjectOverlapQuery.Create(fromJson, id => dumps.GetValueOrDefault(id));
 
         using var dat = SampleDat.OpenPortal();

@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Support;
@@ -62,7 +63,7 @@ public class FixtureLibraryTests
             var target = Path.Combine(dir.Path, f);
             Directory.CreateDirectory(Path.GetDirectoryName(target)!);
             var text = File.ReadAllText(Path.Combine(Committed.Folder, f));
-            File.WriteAllText(target, f == file ? text.Replace(ShadowFileFormat.Format, format).Replace(BspFileFormat.Format, format) : text);
+            File.WriteAllText(target, f == file ? text.Replace(FileFormats.Shadow.Format, format).Replace(FileFormats.Bsp.Format, format) : text);
         }
         var e = Assert.Throws<FormatException>(() => SetupFixture.Load(dir.Path, 0x020019FF));
         Assert.Contains(expected, e.Message);

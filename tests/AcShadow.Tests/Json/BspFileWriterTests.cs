@@ -1,5 +1,6 @@
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Forge;
 

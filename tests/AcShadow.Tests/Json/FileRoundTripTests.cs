@@ -1,8 +1,10 @@
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;

@@ -1,6 +1,7 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Poses;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;

@@ -100,7 +100,7 @@ public class SceneCompileTests
         Assert.Equal(retailParts, needed);
         var files = CompiledSceneFiles.Render(report, id => SampleChart.Subjects.Value.Bsps.Get(id) is null ? null
             : AcShadow.Core.Bsp.BspExtractor.Extract(SampleChart.Subjects.Value.GfxObj(id)!));
-        Assert.Equal(needed.Select(AcShadow.Fixtures.Json.BspFileFormat.PathFor), files.Select(f => f.RelativePath).Where(p => p.StartsWith("gfxobjs/")));
+        Assert.Equal(needed.Select(AcShadow.Fixtures.Formats.FileFormats.Bsp.PathFor), files.Select(f => f.RelativePath).Where(p => p.StartsWith("gfxobjs/")));
     }
 
     [Fact]

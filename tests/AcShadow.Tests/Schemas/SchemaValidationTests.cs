@@ -1,4 +1,5 @@
 using System.Text.Json;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures;
 using AcShadow.Tests.Fixtures;
 using AcShadow.Tests.Support;

@@ -5,6 +5,7 @@ using AcShadow.Core.Scenes.Compile;
 using AcShadow.Core.View;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Tests.Chart;
@@ -69,8 +70,8 @@ public sealed class CompiledSceneViewTests
         var dir = new TempDir();
         Directory.CreateDirectory(Path.Combine(dir.Path, "gfxobjs"));
         foreach (var id in new[] { Leaf, Post })
-            File.Copy(Path.Combine(CommittedFixturesTests.RepositoryFixtures(), BspFileFormat.PathFor(id)), Path.Combine(dir.Path, BspFileFormat.PathFor(id)));
-        File.WriteAllText(Path.Combine(dir.Path, CompiledSceneFormat.Path), json);
+            File.Copy(Path.Combine(CommittedFixturesTests.RepositoryFixtures(), FileFormats.Bsp.PathFor(id)), Path.Combine(dir.Path, FileFormats.Bsp.PathFor(id)));
+        File.WriteAllText(Path.Combine(dir.Path, FileFormats.CompiledScene.Path), json);
         return dir;
     }
 
@@ -152,7 +153,7 @@ public sealed class CompiledSceneViewTests
         Assert.Equal(2 * 32 + 14 * 32 * 2, ViewCommandTests.Triangles(sphere));
         AssertClose(Gltf(new Vector3(1.5f, 1.5f, 0), new Vector3(2.5f, 2.5f, 1)), LandblockBounds(sphere));
         // The BSP part: the committed leaf's physics polygons, n − 2 triangles each, at (16, 2, 0).
-        var leaf = BspFileReader.Read(File.ReadAllText(Path.Combine(scene.Path, BspFileFormat.PathFor(Leaf))));
+        var leaf = BspFileReader.Read(File.ReadAllText(Path.Combine(scene.Path, FileFormats.Bsp.PathFor(Leaf))));
         var part = Only("retail").VisualChildren.Single();
         Assert.Equal(PolygonTriangles(leaf), ViewCommandTests.Triangles(part));
         var used = leaf.Polygons.Where(p => p.Plane is not null).SelectMany(p => p.VertexIds).ToHashSet();
@@ -179,7 +180,7 @@ public sealed class CompiledSceneViewTests
         Assert.Contains("part-hulls", models);
         Assert.Equal([.. models, "cells"], root.VisualChildren.Select(g => g.Name));
 
-        var json = File.ReadAllText(Path.Combine(scene.Path, CompiledSceneFormat.Path));
+        var json = File.ReadAllText(Path.Combine(scene.Path, FileFormats.CompiledScene.Path));
         var worldOrigin = System.Text.Json.JsonDocument.Parse(json).RootElement.GetProperty("worldOrigin").EnumerateArray().Select(e => e.GetSingle()).ToArray();
         Assert.Equal(GlbWriter.ToGltf(new Vector3(worldOrigin[0], worldOrigin[1], worldOrigin[2])), root.LocalTransform.Translation);
         foreach (var o in loaded.Objects)
@@ -305,9 +306,9 @@ public sealed class CompiledSceneViewTests
         using var unknownModel = SceneFolder(HandBuilt(boxModel: "boxes"));
         using var noExtents = SceneFolder(HandBuilt().Replace("\"halfExtents\"", "\"halfExtent\""));
         using var swapped = SceneFolder(HandBuilt());
-        File.Copy(Path.Combine(swapped.Path, BspFileFormat.PathFor(Post)), Path.Combine(swapped.Path, BspFileFormat.PathFor(Leaf)), overwrite: true);
+        File.Copy(Path.Combine(swapped.Path, FileFormats.Bsp.PathFor(Post)), Path.Combine(swapped.Path, FileFormats.Bsp.PathFor(Leaf)), overwrite: true);
         using var missing = SceneFolder(HandBuilt());
-        File.Delete(Path.Combine(missing.Path, BspFileFormat.PathFor(Leaf)));
+        File.Delete(Path.Combine(missing.Path, FileFormats.Bsp.PathFor(Leaf)));
         using var good = SceneFolder(HandBuilt());
         var cases = new (string[] Args, int Code, string Expected)[]
         {

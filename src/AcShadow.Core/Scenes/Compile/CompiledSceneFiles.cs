@@ -1,8 +1,10 @@
 using System.Text;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Chart.Output;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Core.Scenes.Compile;
@@ -14,15 +16,18 @@ namespace AcShadow.Core.Scenes.Compile;
 /// </summary>
 public static class CompiledSceneFiles
 {
+    private const string ChartCsvPath = "scene-chart.csv";
+    private const string ChartSvgPath = "scene-chart.svg";
+
     public static IReadOnlyList<ChartFile> Render(CompiledSceneReport report, Func<uint, BspDump?> dumps)
     {
-        var files = new List<ChartFile> { new(CompiledSceneFormat.Path, CompiledSceneWriter.Write(report)) };
+        var files = new List<ChartFile> { new(FileFormats.CompiledScene.Path, CompiledSceneWriter.Write(report)) };
         foreach (var id in CompiledSceneWriter.BspGfxObjs(report))
-            if (dumps(id) is { } dump) files.Add(new ChartFile(BspFileFormat.PathFor(id), BspFileWriter.Write(dump)));
+            if (dumps(id) is { } dump) files.Add(new ChartFile(FileFormats.Bsp.PathFor(id), BspFileWriter.Write(dump)));
         foreach (var cell in report.Cells)
             if (cell.Bsp is not null) files.Add(new ChartFile(CompiledSceneWriter.CellBspPath(cell.Cell.Id), BspFileWriter.Write(cell.Physics!)));
-        files.Add(new ChartFile(CompiledSceneFormat.ChartCsvPath, new UTF8Encoding(false).GetBytes(SceneChartCsv.Write(report))));
-        files.Add(new ChartFile(CompiledSceneFormat.ChartSvgPath, new UTF8Encoding(false).GetBytes(SceneChartSvg.Write(report))));
+        files.Add(new ChartFile(ChartCsvPath, new UTF8Encoding(false).GetBytes(SceneChartCsv.Write(report))));
+        files.Add(new ChartFile(ChartSvgPath, new UTF8Encoding(false).GetBytes(SceneChartSvg.Write(report))));
         return files;
     }
 }

@@ -1,10 +1,11 @@
 using AcShadow.Core.Chart;
-using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Json;
-using AcShadow.Fixtures.Json;
 using AcShadow.Core.Shapes;
-using AcShadow.Fixtures.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Scenes.Compile;
 
@@ -31,7 +32,7 @@ public static class CompiledSceneWriter
         }
         var totals = report.Totals;
         var json = new JsonObj()
-            .Add("format", CompiledSceneFormat.Format)
+            .Add("format", FileFormats.CompiledScene.Format)
             .Add("landblockId", JsonIds.Format(scene.LandBlockInfoId))
             .Add("landblock", new JsonObj().Add("x", coordinates.X).Add("y", coordinates.Y))
             .Add("worldOrigin", new JsonArr().Add(JsonNum.Of(coordinates.WorldOriginX)).Add(JsonNum.Of(coordinates.WorldOriginY)).Add(JsonNum.Of(0)))
@@ -110,7 +111,7 @@ public static class CompiledSceneWriter
         var (wx, wy, wz) = WorldFrame.Origin(scene.Coordinates, placed.Frame);
         var json = new JsonObj()
             .Add("index", placed.Index)
-            .Add("placedBy", SceneFileFormat.PlacedByName(placed.PlacedBy))
+            .Add("placedBy", placed.PlacedBy.Name())
             .Add("placedIndex", placed.PlacedIndex)
             .Add("cellId", p.CellId is { } cell ? JsonIds.Format(cell) : null)
             .Add("id", JsonIds.Format(placed.Id))
@@ -168,7 +169,7 @@ public static class CompiledSceneWriter
         }
         return shape.CollisionType switch
         {
-            CollisionType.Bsp when s.Bsp is { } bsp => Part("bsp", s).Add("file", BspFileFormat.PathFor(bsp.GfxObjId)),
+            CollisionType.Bsp when s.Bsp is { } bsp => Part("bsp", s).Add("file", FileFormats.Bsp.PathFor(bsp.GfxObjId)),
             CollisionType.Cylinder => new JsonObj().Add("type", "cylinder").Add("source", s.Name).Add("base", shape.LocalPosition).Add("radius", shape.Radius).Add("height", shape.CylHeight),
             _ => new JsonObj().Add("type", "sphere").Add("source", s.Name).Add("center", shape.LocalPosition).Add("radius", shape.Radius),
         };

@@ -1,16 +1,23 @@
 using System.Text.Json;
-using AcShadow.Core.Poses;
+using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
+using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
+using static AcShadow.Fixtures.Json.JsonPathFields;
 
-namespace AcShadow.Core.Batch;
+namespace AcShadow.Core.Formats;
 
-/// <summary>Reads index.json back; anything missing or malformed is a <see cref="FormatException"/> naming the field.</summary>
+/// <summary>
+/// Reads index.json back with everything verify needs to regenerate it: the fixtures library's parser of the
+/// file, plus the dat identity, selection, formats and pose of <c>inputs</c>. Anything missing or malformed is a
+/// <see cref="FormatException"/> naming the field.
+/// </summary>
 public static class BatchIndexReader
 {
     public static BatchIndex Read(byte[] utf8)
@@ -41,35 +48,24 @@ public static class BatchIndexReader
     private static BatchIndex Read(JsonElement root)
     {
         var format = Str(root, "format", "$");
-        if (format != BatchIndexFormat.Format) throw new FormatException($"$.format is \"{format}\", expected \"{BatchIndexFormat.Format}\"");
-        var inputs = Member(root, "inputs", "$");
-        var policyText = Str(inputs, "policy", "$.inputs");
-        if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"$.inputs.policy \"{policyText}\" is not retail or union");
-        var scale = Member(inputs, "entityScale", "$.inputs");
-        if (scale.ValueKind != JsonValueKind.Number) throw new FormatException("$.inputs.entityScale is not a number");
-        var cell = Member(inputs, "cellDat", "$.inputs");
-        var result = new BatchInputs(
-            Dat(Member(inputs, "dat", "$.inputs"), "$.inputs.dat"),
-            cell.ValueKind == JsonValueKind.Null ? null : Dat(cell, "$.inputs.cellDat"),
-            policy,
-            scale.GetSingle(),
-            Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"))
+        if (format != FileFormats.Index.Format) throw new FormatException($"$.format is \"{format}\", expected \"{FileFormats.Index.Format}\"");
+        var body = IndexFileReader.Read(root, static (inputs, policy, scale) =>
         {
-            Formats = Formats(inputs),
-            Pose = Pose(inputs),
-            DoorState = State(inputs),
-            MotionTable = MotionTable(inputs),
-        };
-        var files = Member(root, "files", "$");
-        if (files.ValueKind != JsonValueKind.Array) throw new FormatException("$.files is not an array");
-        var list = files.EnumerateArray().Select((f, i) =>
-        {
-            var at = $"$.files[{i}]";
-            var kind = Str(f, "kind", at);
-            return new IndexedFile(Str(f, "path", at), FixtureKinds.TryParse(kind, out var k) ? k : throw new FormatException($"{at}.kind \"{kind}\" is not a kind of file acshadow writes"),
-                Str(f, "id", at), Str(f, "sha256", at));
-        }).ToArray();
-        return new BatchIndex(result, list);
+            var cell = Member(inputs, "cellDat", "$.inputs");
+            return new BatchInputs(
+                Dat(Member(inputs, "dat", "$.inputs"), "$.inputs.dat"),
+                cell.ValueKind == JsonValueKind.Null ? null : Dat(cell, "$.inputs.cellDat"),
+                policy,
+                scale,
+                Selection(Member(inputs, "selection", "$.inputs"), "$.inputs.selection"))
+            {
+                Formats = Formats(inputs),
+                Pose = Pose(inputs),
+                DoorState = State(inputs),
+                MotionTable = MotionTable(inputs),
+            };
+        });
+        return new BatchIndex(body.Inputs, body.Files);
     }
 
     private static PosePolicy Pose(JsonElement inputs)
@@ -134,35 +130,5 @@ public static class BatchIndexReader
         }
         var cells = !e.TryGetProperty("cells", out var c) || c.ValueKind != JsonValueKind.False;
         return new BatchSelection(Bool(e, "doors", at), Bool(e, "all", at), list, landblock) { Cells = cells };
-    }
-
-    private static JsonElement Member(JsonElement e, string name, string at)
-    {
-        if (e.ValueKind != JsonValueKind.Object) throw new FormatException($"{at} is not an object");
-        return e.TryGetProperty(name, out var v) ? v : throw new FormatException($"{at}.{name} is missing");
-    }
-
-    private static string Str(JsonElement e, string name, string at)
-    {
-        var v = Member(e, name, at);
-        return v.ValueKind == JsonValueKind.String ? v.GetString()! : throw new FormatException($"{at}.{name} is not a string");
-    }
-
-    private static long Num(JsonElement e, string name, string at)
-    {
-        var v = Member(e, name, at);
-        return v.ValueKind == JsonValueKind.Number && v.TryGetInt64(out var n) ? n
-            : throw new FormatException($"{at}.{name} is not an integer");
-    }
-
-    private static bool Bool(JsonElement e, string name, string at)
-    {
-        var v = Member(e, name, at);
-        return v.ValueKind switch
-        {
-            JsonValueKind.True => true,
-            JsonValueKind.False => false,
-            _ => throw new FormatException($"{at}.{name} is not true or false"),
-        };
     }
 }

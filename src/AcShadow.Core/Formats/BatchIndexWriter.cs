@@ -1,13 +1,15 @@
-using AcShadow.Fixtures.Batch;
-using AcShadow.Fixtures.Shapes;
+using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Json;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Batch;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
 /// Writes index.json: the run's inputs (enough for verify to regenerate), a summary, what was skipped,
@@ -65,7 +67,7 @@ public static class BatchIndexWriter
 
     /// <summary>Everything before the files array.</summary>
     private static JsonObj Head(BatchInputs inputs, IReadOnlyList<FileEntry> files, IReadOnlyList<SkippedItem> skipped) => new JsonObj()
-        .Add("format", BatchIndexFormat.Format)
+        .Add("format", FileFormats.Index.Format)
         .Add("inputs", Inputs(inputs))
         .Add("summary", new JsonObj()
             .Add("files", files.Count)

@@ -1,10 +1,10 @@
 using System.Text.Json;
-using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
-using static AcShadow.Fixtures.Json.BspFileReader;
+using static AcShadow.Fixtures.Json.JsonFields;
 
-namespace AcShadow.Fixtures.Json;
+namespace AcShadow.Fixtures.Formats;
 
 /// <summary>
 /// Reads the shapes and the pose of a shadow file back, so a consumer of the fixtures (or the collision
@@ -17,7 +17,7 @@ public static class ShadowFileReader
     {
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
-        AcShadow.Fixtures.FormatCheck.Require(root, ShadowFileFormat.Format, "shadow file");
+        FormatCheck.Require(root, FileFormats.Shadow, "shadow file");
         if (!JsonIds.TryParse(Str(root, "setupId"), out var setupId)) throw new FormatException("setupId is not a hex id");
         if (!ShapePolicies.TryParse(Str(root, "policy"), out var policy)) throw new FormatException("unknown policy");
         var placement = Prop(root, "placement");
@@ -48,24 +48,12 @@ public static class ShadowFileReader
 
     internal static ShadowShape ReadShape(JsonElement s)
     {
-        var source = Str(s, "source") switch
-        {
-            "part" => ShapeSource.Part,
-            "cylSphere" => ShapeSource.CylSphere,
-            "sphere" => ShapeSource.Sphere,
-            var other => throw new FormatException($"unknown shape source \"{other}\""),
-        };
-        var type = Str(s, "collisionType") switch
-        {
-            "bsp" => CollisionType.Bsp,
-            "cylinder" => CollisionType.Cylinder,
-            "sphere" => CollisionType.Sphere,
-            var other => throw new FormatException($"unknown collision type \"{other}\""),
-        };
+        var source = ShadowShapeNames.ParseSource(Str(s, "source"));
+        var type = ShadowShapeNames.ParseCollisionType(Str(s, "collisionType"));
         var gfxElement = Prop(s, "gfxObjId");
         uint? gfx = gfxElement.ValueKind == JsonValueKind.Null ? null
             : JsonIds.TryParse(gfxElement.GetString(), out var g) ? g : throw new FormatException("gfxObjId is not a hex id");
-        Sphere? local = s.TryGetProperty("localSphere", out var ls) ? BspFileReader.Sphere(ls) : null;
+        Sphere? local = s.TryGetProperty("localSphere", out var ls) ? Sphere(ls) : null;
         return new ShadowShape(source, Int(s, "sourceIndex"), gfx, type, Vec(Prop(s, "localPosition")), Quat(Prop(s, "localRotation")),
             Float(s, "scale"), Float(s, "radius"), Float(s, "cylHeight"), local);
     }

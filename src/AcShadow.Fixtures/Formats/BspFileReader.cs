@@ -1,10 +1,8 @@
-using System.Numerics;
 using System.Text.Json;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Fixtures.Collision;
-using AcShadow.Fixtures.Geometry;
+using static AcShadow.Fixtures.Json.JsonFields;
 
-namespace AcShadow.Fixtures.Json;
+namespace AcShadow.Fixtures.Formats;
 
 /// <summary>
 /// Reads an "acshadow.bsp/1" file back into a <see cref="BspDump"/>, so consumers of the fixtures query
@@ -16,8 +14,8 @@ public static class BspFileReader
     {
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
-        AcShadow.Fixtures.FormatCheck.Require(root, BspFileFormat.Format, "BSP file");
-        if (!JsonIds.TryParse(Str(root, "gfxObjId"), out var id)) throw new FormatException("gfxObjId is not a hex id");
+        FormatCheck.Require(root, FileFormats.Bsp, "BSP file");
+        if (!Json.JsonIds.TryParse(Str(root, "gfxObjId"), out var id)) throw new FormatException("gfxObjId is not a hex id");
         return ReadBody(root, id, Arr(root, "diagnostics").Select(e => e.GetString() ?? "").ToArray());
     }
 
@@ -62,31 +60,6 @@ public static class BspFileReader
         if (!Enum.IsDefined(type)) throw new FormatException($"unknown node type \"{tag}\"");
         return type;
     }
-
-    internal static JsonElement Prop(JsonElement e, string name) =>
-        e.TryGetProperty(name, out var v) ? v : throw new FormatException($"missing field \"{name}\"");
-
-    internal static string Str(JsonElement e, string name) => Prop(e, name).GetString() ?? throw new FormatException($"\"{name}\" is null");
-    internal static int Int(JsonElement e, string name) => Prop(e, name).GetInt32();
-    internal static float Float(JsonElement e, string name) => Number(Prop(e, name));
-
-    /// <summary>The writers put null where a float is NaN or infinite (JSON has no such numbers); it reads back as NaN.</summary>
-    internal static float Number(JsonElement e) => e.ValueKind == JsonValueKind.Null ? float.NaN : e.GetSingle();
-    internal static IEnumerable<JsonElement> Arr(JsonElement e, string name) => Prop(e, name).EnumerateArray();
-
-    internal static Vector3 Vec(JsonElement e)
-    {
-        var a = e.EnumerateArray().Select(Number).ToArray();
-        if (a.Length != 3) throw new FormatException("a vector needs 3 numbers");
-        return new Vector3(a[0], a[1], a[2]);
-    }
-
-    internal static Sphere Sphere(JsonElement e) => new(Vec(Prop(e, "center")), Float(e, "radius"));
-
-    internal static Quaternion Quat(JsonElement e) => new(Float(e, "x"), Float(e, "y"), Float(e, "z"), Float(e, "w"));
-
-    private static Plane? OptionalPlane(JsonElement e) =>
-        e.ValueKind == JsonValueKind.Null ? null : new Plane(Vec(Prop(e, "normal")), Float(e, "d"));
 
     private static int? OptionalInt(JsonElement e) => e.ValueKind == JsonValueKind.Null ? null : e.GetInt32();
 }

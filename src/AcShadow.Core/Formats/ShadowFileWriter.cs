@@ -1,9 +1,11 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Core.Formats;
 
 /// <summary>Writes a Setup's <see cref="ShadowShapeSet"/> as the canonical shadow file (docs/formats.md).</summary>
 public static class ShadowFileWriter
@@ -12,15 +14,18 @@ public static class ShadowFileWriter
 
     /// <param name="bspReference">How a shape names its BSP file; by default relative to setups/ (the shadow file's folder).</param>
     public static JsonObj ToJson(Setup setup, ShadowShapeSet set, Func<uint, string>? bspReference = null) => new JsonObj()
-        .Add("format", ShadowFileFormat.Format)
+        .Add("format", FileFormats.Shadow.Format)
         .Add("setupId", JsonIds.Format(set.SetupId))
         .Add("policy", set.Policy.Name())
         .Add("placement", new JsonObj().Add("requested", set.Placement.Requested).Add("used", set.Placement.Used))
         .Add("pose", Pose(set.Pose))
         .Add("entityScale", set.EntityScale)
         .Add("setup", SetupFacts(setup, set))
-        .Add("shapes", JsonArr.Of(set.Shapes, s => Shape(s, bspReference ?? ShadowFileFormat.BspReference)))
+        .Add("shapes", JsonArr.Of(set.Shapes, s => Shape(s, bspReference ?? BspReference)))
         .Add("diagnostics", JsonArr.Of(set.Diagnostics, d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
+
+    /// <summary>A BSP dump's path relative to a shadow file (setups/ and gfxobjs/ are siblings).</summary>
+    private static string BspReference(uint gfxObjId) => "../" + FileFormats.Bsp.PathFor(gfxObjId);
 
     private static JsonObj Pose(PoseProvenance p) => new JsonObj()
         .Add("policy", p.Policy)
@@ -60,10 +65,10 @@ public static class ShadowFileWriter
     private static JsonNode Shape(ShadowShape s, Func<uint, string> bspReference)
     {
         var obj = new JsonObj()
-            .Add("source", ShadowFileFormat.SourceName(s.Source))
+            .Add("source", s.Source.Name())
             .Add("sourceIndex", s.SourceIndex)
             .Add("gfxObjId", s.GfxObjId is { } id ? JsonIds.Format(id) : null)
-            .Add("collisionType", ShadowFileFormat.CollisionTypeName(s.CollisionType))
+            .Add("collisionType", s.CollisionType.Name())
             .Add("localPosition", s.LocalPosition)
             .Add("localRotation", JsonShapes.Quaternion(s.LocalRotation))
             .Add("scale", s.Scale)

@@ -1,9 +1,13 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
+using AcShadow.Core.Export;
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Core.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
 /// Writes a <see cref="BspDump"/> in acdream's GfxObj fixture shape: GfxObjId (a number),
@@ -16,6 +20,10 @@ namespace AcShadow.Core.Json;
 public static class AcdreamGfxObjWriter
 {
     public static byte[] Write(BspDump dump) => CanonicalJsonWriter.WriteUtf8(ToJson(dump));
+
+    /// <summary>The acdream file beside a canonical BSP dump, named by the same GfxObj id.</summary>
+    public static OutputFile File(uint gfxObjId, BspDump dump) =>
+        new(FileFormats.AcdreamGfxObj.PathFor(gfxObjId), FixtureKind.AcdreamGfxObj, gfxObjId, Write(dump), 0, PolygonCount(dump));
 
     /// <summary>How many polygons the file carries (those with a plane).</summary>
     public static int PolygonCount(BspDump dump) => dump.Polygons.Count(p => p.Plane is not null);

@@ -1,13 +1,17 @@
 using System.Numerics;
-using AcShadow.Fixtures.Bsp;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Export;
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Cells;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
-/// Writes a <see cref="CellFile"/> in acdream's EnvCell fixture shape (its CellDump record): CellId (a
+/// Writes an EnvCell in acdream's EnvCell fixture shape (its CellDump record): CellId (a
 /// number), WorldTransform and InverseWorldTransform as {M11 … M44} (System.Numerics' row-vector
 /// convention, <see cref="CellMatrices"/>; the frame is the landblock-relative one, as acdream's own
 /// captured cells are), ResolvedPolygons (physics polygons with a plane, cell frame), PortalPolygons (each
@@ -17,29 +21,32 @@ namespace AcShadow.Core.Json;
 /// </summary>
 public static class AcdreamCellWriter
 {
-    public static byte[] Write(CellFile cell) => CanonicalJsonWriter.WriteUtf8(ToJson(cell));
+    /// <summary>The acdream file beside a cell file, from the records the cell file was written from.</summary>
+    /// <param name="landblockFrame">The cell's frame in its landblock.</param>
+    /// <param name="physics">The cell structure's physics polygons, in the cell's frame.</param>
+    /// <param name="portals">The portals as the cell file lists them (other cells as full ids).</param>
+    /// <param name="visibleCells">Full cell ids.</param>
+    public static OutputFile File(uint cellId, Frame landblockFrame, BspDump physics, IReadOnlyList<CellPortalRecord> portals, IReadOnlyList<uint> visibleCells) =>
+        new(FileFormats.AcdreamCell.PathFor(cellId), FixtureKind.AcdreamCell, cellId,
+            CanonicalJsonWriter.WriteUtf8(ToJson(cellId, landblockFrame, physics, portals, visibleCells)), 0, physics.Polygons.Count(p => p.Plane is not null));
 
-    /// <summary>How many polygons the file carries (physics polygons with a plane, then portal polygons).</summary>
-    public static int PolygonCount(CellFile cell) => cell.Physics.Polygons.Count(p => p.Plane is not null);
-
-    public static JsonObj ToJson(CellFile cell)
+    private static JsonObj ToJson(uint cellId, Frame frame, BspDump physics, IReadOnlyList<CellPortalRecord> portals, IReadOnlyList<uint> visibleCells)
     {
-        var frame = new Frame(cell.LandblockOrigin, cell.Orientation);
-        var positions = cell.Physics.Vertices.ToDictionary(v => v.Id, v => v.Position);
-        var portalPolygons = cell.Portals.Where(p => p.Plane is not null).DistinctBy(p => p.PolygonId).OrderBy(p => p.PolygonId);
+        var positions = physics.Vertices.ToDictionary(v => v.Id, v => v.Position);
+        var portalPolygons = portals.Where(p => p.Plane is not null).DistinctBy(p => p.PolygonId).OrderBy(p => p.PolygonId);
         return new JsonObj()
-            .Add("CellId", JsonNum.Of((long)cell.CellId))
+            .Add("CellId", JsonNum.Of((long)cellId))
             .Add("WorldTransform", Matrix(CellMatrices.World(frame)))
             .Add("InverseWorldTransform", Matrix(CellMatrices.Inverse(frame)))
-            .Add("ResolvedPolygons", JsonArr.Of(cell.Physics.Polygons.Where(p => p.Plane is not null), p =>
+            .Add("ResolvedPolygons", JsonArr.Of(physics.Polygons.Where(p => p.Plane is not null), p =>
                 Polygon(p.Id, p.VertexIds.Count, (int)p.SidesType, p.Plane!.Value, p.VertexIds.Select(id => positions[id]))))
             .Add("PortalPolygons", JsonArr.Of(portalPolygons, p =>
                 Polygon(p.PolygonId, p.Vertices.Count, (int)SidesType.Landblock, p.Plane!.Value, p.Vertices)))
-            .Add("Portals", JsonArr.Of(cell.Portals, p => new JsonObj()
+            .Add("Portals", JsonArr.Of(portals, p => new JsonObj()
                 .Add("OtherCellId", (int)(p.OtherCellId & 0xFFFF))
                 .Add("PolygonId", p.PolygonId)
                 .Add("Flags", p.Flags)))
-            .Add("VisibleCellIds", JsonArr.Of(cell.VisibleCells, v => JsonNum.Of((long)v)));
+            .Add("VisibleCellIds", JsonArr.Of(visibleCells, v => JsonNum.Of((long)v)));
     }
 
     private static JsonObj Polygon(int id, int points, int sidesType, Plane plane, IEnumerable<Vector3> vertices) => new JsonObj()

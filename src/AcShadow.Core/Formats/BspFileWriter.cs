@@ -1,11 +1,13 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Json;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
 /// Writes a <see cref="BspDump"/> as the canonical "acshadow.bsp/1" file (docs/formats.md).
@@ -22,7 +24,7 @@ public static class BspFileWriter
 
     private static void Layout(Utf8JsonText t, BspDump dump)
     {
-        t.Raw("{\n  \"format\": "u8).String(BspFileFormat.Format)
+        t.Raw("{\n  \"format\": "u8).String(FileFormats.Bsp.Format)
             .Raw(",\n  \"gfxObjId\": "u8).String(JsonIds.Format(dump.GfxObjId))
             .Raw(",\n  \"boundingSphere\": "u8);
         WriteSphere(t, dump.BoundingSphere);
@@ -114,7 +116,7 @@ public static class BspFileWriter
     public static JsonObj ToJson(BspDump dump)
     {
         var root = new JsonObj()
-            .Add("format", BspFileFormat.Format)
+            .Add("format", FileFormats.Bsp.Format)
             .Add("gfxObjId", JsonIds.Format(dump.GfxObjId))
             .Add("boundingSphere", JsonShapes.Sphere(dump.BoundingSphere))
             .Add("vertices", JsonArr.Of(dump.Vertices, v => new JsonObj().Add("id", v.Id).Add("position", v.Position)))

@@ -1,0 +1,7 @@
+using AcShadow.Fixtures.Batch;
+using AcShadow.Fixtures.Shapes;
+
+namespace AcShadow.Fixtures.Formats;
+
+/// <summary>index.json's body as <see cref="IndexFileReader"/> read it.</summary>
+internal sealed record IndexFileBody<TInputs>(ShapePolicy Policy, float EntityScale, TInputs Inputs, IReadOnlyList<IndexedFile> Files);
