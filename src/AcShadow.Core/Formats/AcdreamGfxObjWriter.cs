@@ -26,9 +26,9 @@ public static class AcdreamGfxObjWriter
         new(FileFormats.AcdreamGfxObj.PathFor(gfxObjId), FixtureKind.AcdreamGfxObj, gfxObjId, Write(dump), 0, PolygonCount(dump));
 
     /// <summary>How many polygons the file carries (those with a plane).</summary>
-    public static int PolygonCount(BspDump dump) => dump.Polygons.Count(p => p.Plane is not null);
+    private static int PolygonCount(BspDump dump) => dump.Polygons.Count(p => p.Plane is not null);
 
-    public static JsonObj ToJson(BspDump dump)
+    private static JsonObj ToJson(BspDump dump)
     {
         var positions = dump.Vertices.ToDictionary(v => v.Id, v => v.Position);
         return new JsonObj()
