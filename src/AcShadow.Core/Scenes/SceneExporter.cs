@@ -2,6 +2,7 @@ using AcShadow.Core.Batch;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;

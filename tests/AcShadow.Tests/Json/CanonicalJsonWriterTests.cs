@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 

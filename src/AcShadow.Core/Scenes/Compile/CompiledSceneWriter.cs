@@ -1,4 +1,5 @@
 using AcShadow.Core.Chart;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;

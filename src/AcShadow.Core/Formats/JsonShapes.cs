@@ -1,8 +1,8 @@
 using System.Numerics;
-using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Json;
 using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Core.Json;
+namespace AcShadow.Core.Formats;
 
 /// <summary>The small value objects every format shares: quaternions, planes, spheres.</summary>
 public static class JsonShapes
