@@ -28,7 +28,7 @@ public static class BatchCommand
     {
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
-        var outDir = new Option<string>("--out") { Description = "output folder", HelpName = "DIR", Required = true };
+        var outDir = CommonOptions.RequiredOut();
         var policy = CommonOptions.Policy();
         var scale = CommonOptions.Scale();
         var jobs = SelectionOptions.Jobs();

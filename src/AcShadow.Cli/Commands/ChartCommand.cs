@@ -29,7 +29,7 @@ public static class ChartCommand
         var setup = new Option<string[]>("--setup") { Description = "a Setup id to chart, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
-        var outDir = new Option<string>("--out") { Description = "output folder", HelpName = "DIR", Required = true };
+        var outDir = CommonOptions.RequiredOut();
         var radius = new Option<string?>("--probe-radius") { Description = $"query sphere radius in metres (default {F(ChartOptions.DefaultProbeRadius)}, a player)", HelpName = "R" };
         var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})", HelpName = "S" };
         var scale = CommonOptions.Scale();

@@ -28,7 +28,7 @@ public static class SceneCommand
     {
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
-        var outDir = new Option<string>("--out") { Description = "output folder", HelpName = "DIR", Required = true };
+        var outDir = CommonOptions.RequiredOut();
         var radius = new Option<string[]>("--mover-radius")
         {
             Description = $"a mover sphere radius in metres to be exact for (repeat for more; default {ChartOptions.DefaultProbeRadius.ToString(CultureInfo.InvariantCulture)}, a player); the first also sizes the grid",

@@ -29,4 +29,12 @@ public static class CommonOptions
         HelpName = "DIR",
         DefaultValueFactory = _ => defaultValue,
     };
+
+    /// <summary>--out for the commands that write a folder of many files and have no default for it.</summary>
+    public static Option<string> RequiredOut() => new("--out")
+    {
+        Description = "output folder",
+        HelpName = "DIR",
+        Required = true,
+    };
 }
