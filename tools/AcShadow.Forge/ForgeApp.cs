@@ -1,6 +1,7 @@
 using System.CommandLine;
 using AcShadow.Files;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Forge;
 

@@ -1,5 +1,5 @@
 using AcShadow.Core.Catalog;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Forge;
 

@@ -1,7 +1,8 @@
 using AcShadow.Core.Catalog;
 using System.Numerics;
-using AcShadow.Forge.Geometry;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Geometry;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Forge;
 

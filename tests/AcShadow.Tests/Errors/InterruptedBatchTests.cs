@@ -3,6 +3,7 @@ using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 using AcShadow.Files;
 using AcShadow.Forge;
+using AcShadow.Forging;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Errors;

@@ -2,6 +2,7 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Json;
 
