@@ -1,5 +1,6 @@
 using System.CommandLine;
 using AcShadow.Files;
+using AcShadow.Forge.Scale;
 using AcShadow.Forging;
 using AcShadow.Forging.Spec;
 

@@ -2,7 +2,7 @@ using System.Diagnostics;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 using AcShadow.Files;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 using AcShadow.Forging;
 using AcShadow.Tests.Support;
 

@@ -1,6 +1,6 @@
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 using AcShadow.Forging;
 using AcShadow.Forging.Spec;
 

@@ -7,7 +7,7 @@ using AcShadow.Fixtures.Geometry;
 using AcShadow.Forging.Bsp;
 using AcShadow.Forging.Geometry;
 using AcShadow.Forging.Spec;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 using AcShadow.Forging;
 
 namespace AcShadow.Tests.Forge;

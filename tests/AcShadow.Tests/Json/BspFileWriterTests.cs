@@ -1,7 +1,7 @@
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 using AcShadow.Forging;
 
 namespace AcShadow.Tests.Json;

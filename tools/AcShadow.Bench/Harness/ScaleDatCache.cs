@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Globalization;
 using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 using AcShadow.Forging;
 
 namespace AcShadow.Bench.Harness;
