@@ -5,8 +5,9 @@ using static AcShadow.Forge.Scale.SpecValues;
 namespace AcShadow.Forge.Scale;
 
 /// <summary>
-/// The scale spec's landblocks as seen outdoors: one per 200 Setups, each placing Setups and bare GfxObjs
-/// (one object in five) anywhere in its 192 m square, and up to three buildings.
+/// The scale spec's landblocks as seen outdoors: one per 200 Setups (at least one), each placing 10-30
+/// objects (the first, <see cref="ScaleSpecGenerator.BusyLandblockObjects"/>) anywhere in its 192 m square,
+/// one in five a bare GfxObj and the rest Setups, and up to three buildings.
 /// </summary>
 internal static class OutdoorLandblocks
 {
