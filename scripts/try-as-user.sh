@@ -73,7 +73,7 @@ cat > "$project/DoorCollision.Tests/DoorCollision.Tests.csproj" <<'XML'
 </Project>
 XML
 cp "$repo/tests/AcShadow.Fixtures.Consumer/DoorCollisionTests.cs" "$project/DoorCollision.Tests/"
-user "cd '$project/DoorCollision.Tests' && dotnet add package AcShadow.Fixtures --version 0.1.0 | grep -E 'PackageReference|error' "
+user "cd '$project/DoorCollision.Tests' && dotnet add package AcShadow.Fixtures --version 0.2.0 | grep -E 'PackageReference|error' "
 user "cd '$project/DoorCollision.Tests' && grep -n 'AcShadow' DoorCollision.Tests.csproj && grep -rl AcShadow.Fixtures obj/project.assets.json"
 
 step "run the consumer test"

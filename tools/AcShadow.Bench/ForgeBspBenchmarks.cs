@@ -1,6 +1,6 @@
-using AcShadow.Forge;
-using AcShadow.Forge.Geometry;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Geometry;
+using AcShadow.Forging.Spec;
 using BenchmarkDotNet.Attributes;
 
 namespace AcShadow.Bench;

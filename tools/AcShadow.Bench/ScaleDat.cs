@@ -1,5 +1,6 @@
 using AcShadow.Core.Dat;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 
 namespace AcShadow.Bench;
 

@@ -18,7 +18,7 @@ public class SphereQueryBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        var (portal, _) = AcShadow.Forge.SampleDats.Build();
+        var (portal, _) = AcShadow.Forging.SampleDats.Build();
         using var dat = AcShadow.Core.Dat.DatDatabase.Open(new MemoryStream(portal), "sample");
         var dump = BspExtractor.Extract(dat.ReadGfxObj(SampleIds.House)!)!;
         _reference = BspSphereQuery.From(dump);

@@ -1,6 +1,8 @@
 using System.CommandLine;
 using AcShadow.Files;
-using AcShadow.Forge.Spec;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Forge;
 

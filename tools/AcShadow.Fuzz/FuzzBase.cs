@@ -1,5 +1,5 @@
 using AcShadow.Core.Dat;
-using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Fuzz;
 

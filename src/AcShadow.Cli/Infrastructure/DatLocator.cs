@@ -1,6 +1,6 @@
 using AcShadow.Core.Dat;
 using AcShadow.Files;
-using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Cli.Infrastructure;
 

@@ -8,7 +8,7 @@ namespace AcShadow.Tests.Batch;
 
 public class BatchCommandTests
 {
-    /// <summary>Every Setup the forged sample holds (tools/AcShadow.Forge/Sample/sample.json).</summary>
+    /// <summary>Every Setup the forged sample holds (src/AcShadow.Forging/Sample/sample.json).</summary>
     public static readonly string[] SampleSetups =
     [
         "0x0200024F", "0x02000281", "0x02001000", "0x020019FF", "0x02002000", "0x02003000",

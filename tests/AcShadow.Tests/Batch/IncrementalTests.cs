@@ -1,5 +1,6 @@
 using AcShadow.Forge;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 using AcShadow.Tests.Support;
 using static AcShadow.Tests.Batch.BatchRuns;
 

@@ -1,6 +1,6 @@
 using System.Text.Json;
 using AcShadow.Bench.Harness;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Bench;

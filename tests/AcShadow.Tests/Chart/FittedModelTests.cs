@@ -5,7 +5,7 @@ using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Fitting;
-using AcShadow.Forge;
+using AcShadow.Forging;
 using AcShadow.Tests.Collision;
 using AcShadow.Tests.Support;
 

@@ -1,6 +1,6 @@
 using AcShadow.Core.Chart;
 using AcShadow.Core.Dat;
-using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Chart;
 

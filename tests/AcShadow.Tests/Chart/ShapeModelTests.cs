@@ -75,7 +75,7 @@ public class ShapeModelTests
 
     private static ChartSubject SampleSubject()
     {
-        var (portal, _) = AcShadow.Forge.SampleDats.Build();
+        var (portal, _) = AcShadow.Forging.SampleDats.Build();
         return new ChartSubjects(AcShadow.Core.Dat.DatDatabase.Open(new MemoryStream(portal), "p.dat")).For(0x02002000)!;
     }
 

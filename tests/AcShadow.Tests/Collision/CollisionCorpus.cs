@@ -3,8 +3,8 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Forge.Bsp;
-using AcShadow.Forge;
+using AcShadow.Forging.Bsp;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Collision;
 

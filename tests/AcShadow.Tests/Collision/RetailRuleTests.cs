@@ -9,7 +9,7 @@ using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
-using AcShadow.Forge.Bsp;
+using AcShadow.Forging.Bsp;
 
 namespace AcShadow.Tests.Collision;
 

@@ -1,6 +1,6 @@
 using System.Buffers.Binary;
 using AcShadow.Core.Dat;
-using AcShadow.Forge;
+using AcShadow.Forging;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Dat;

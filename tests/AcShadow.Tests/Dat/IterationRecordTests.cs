@@ -1,7 +1,7 @@
 using System.Text.Json;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Forge;
+using AcShadow.Forging;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Dat;

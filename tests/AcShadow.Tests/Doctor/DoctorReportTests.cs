@@ -2,7 +2,7 @@ using System.Numerics;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Doctor;
-using AcShadow.Forge;
+using AcShadow.Forging;
 using AcShadow.Tests.Support;
 using AcShadow.Fixtures.Bsp;
 

@@ -3,7 +3,8 @@ using AcShadow.Core.Json;
 using AcShadow.Files;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Errors;

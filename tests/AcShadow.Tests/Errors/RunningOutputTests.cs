@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using AcShadow.Files;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Errors;

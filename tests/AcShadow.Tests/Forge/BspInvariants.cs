@@ -2,7 +2,7 @@ using System.Numerics;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Forge.Bsp;
+using AcShadow.Forging.Bsp;
 
 namespace AcShadow.Tests.Forge;
 

@@ -1,7 +1,7 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Forge;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Tests.Forge;
 

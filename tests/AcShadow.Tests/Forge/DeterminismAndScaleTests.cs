@@ -1,7 +1,8 @@
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
-using AcShadow.Forge;
-using AcShadow.Forge.Spec;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Tests.Forge;
 

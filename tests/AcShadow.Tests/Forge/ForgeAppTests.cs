@@ -1,4 +1,5 @@
 using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Forge;
 

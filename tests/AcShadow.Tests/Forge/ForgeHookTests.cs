@@ -1,10 +1,10 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
-using AcShadow.Forge;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 using AcShadow.Tests.Support;
-using static AcShadow.Forge.SampleSpecAuthor;
+using static AcShadow.Forging.SampleSpecAuthor;
 
 namespace AcShadow.Tests.Forge;
 

@@ -2,8 +2,8 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Forge;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Tests.Forge;
 

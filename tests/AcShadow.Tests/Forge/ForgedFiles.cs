@@ -1,6 +1,7 @@
 using AcShadow.Core.Dat;
 using AcShadow.Files;
 using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Forge;
 

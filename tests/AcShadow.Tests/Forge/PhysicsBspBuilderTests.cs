@@ -4,10 +4,11 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Forge.Bsp;
-using AcShadow.Forge.Geometry;
-using AcShadow.Forge.Spec;
-using AcShadow.Forge;
+using AcShadow.Forging.Bsp;
+using AcShadow.Forging.Geometry;
+using AcShadow.Forging.Spec;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Forge;
 

@@ -5,7 +5,8 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge;
-using static AcShadow.Forge.SampleSpecAuthor;
+using AcShadow.Forging;
+using static AcShadow.Forging.SampleSpecAuthor;
 
 namespace AcShadow.Tests.Forge;
 
@@ -249,6 +250,6 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
     public void Embedded_sample_json_is_what_the_author_code_writes()
     {
         // Sample/sample.json is regenerated with `forge sample --write-spec`; this keeps it in step.
-        Assert.Equal(AcShadow.Forge.Spec.SpecJson.Serialize(SampleSpecAuthor.Create()), SampleDats.Json);
+        Assert.Equal(AcShadow.Forging.Spec.SpecJson.Serialize(SampleSpecAuthor.Create()), SampleDats.Json);
     }
 }

@@ -2,8 +2,9 @@ using System.Numerics;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Spec;
 using AcShadow.Forge;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Forge;
 

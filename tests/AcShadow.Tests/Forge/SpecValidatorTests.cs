@@ -1,5 +1,5 @@
-using AcShadow.Forge;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging;
+using AcShadow.Forging.Spec;
 
 namespace AcShadow.Tests.Forge;
 

@@ -2,7 +2,8 @@ using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 
 namespace AcShadow.Tests.Json;
 

@@ -5,7 +5,7 @@ using AcShadow.Core.Chart;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Scenes.Compile;
-using AcShadow.Forge;
+using AcShadow.Forging;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Tests.Chart;
 using AcShadow.Tests.Support;

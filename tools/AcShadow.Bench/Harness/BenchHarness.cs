@@ -15,7 +15,7 @@ public static class BenchHarness
 {
     public const string DoorSetup = "0x020019FF";
 
-    /// <summary>The scale dat's busy landblock (<see cref="AcShadow.Forge.ScaleSpecGenerator.BusyLandblockObjects"/> objects).</summary>
+    /// <summary>The scale dat's busy landblock (<see cref="AcShadow.Forge.Scale.ScaleSpecGenerator.BusyLandblockObjects"/> objects).</summary>
     public const string BusyLandblock = "0x0000";
 
     /// <summary>The built-in sample's landblock, compiled once for its scene chart.</summary>
@@ -29,7 +29,7 @@ public static class BenchHarness
         foreach (var (_, root) in OutputPlaces(options)) Directory.CreateDirectory(root);
         var full = ScaleDatCache.Get(options.CacheDirectory, options.Setups, options.GfxObjs, options.Seed, log);
         var quarter = ScaleDatCache.Get(options.CacheDirectory, Math.Max(1, options.Setups / 4),
-            Math.Max(AcShadow.Forge.ScaleSpecGenerator.MinGfxObjs(Math.Max(1, options.Setups / 4)), options.GfxObjs / 4), options.Seed, log);
+            Math.Max(AcShadow.Forge.Scale.ScaleSpecGenerator.MinGfxObjs(Math.Max(1, options.Setups / 4)), options.GfxObjs / 4), options.Seed, log);
 
         var timings = new List<Timing>();
         var checks = new List<Check>();

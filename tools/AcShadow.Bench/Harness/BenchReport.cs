@@ -60,7 +60,7 @@ public sealed record BenchReport(
             new($"doctor / batch, {cores} jobs", Get("doctor", "full", cores, "none").Median / batchN.Median, "<=", 2, "acshadow doctor over batch --all, both at all cores, batch writing to disk"),
             new($"peak full / quarter, doctor {cores} jobs", Get("doctor", "full", cores, "none").PeakMedianMiB / Get("doctor", "quarter", cores, "none").PeakMedianMiB, "<=", 1.3, "how the doctor's peak memory grows with the dat"),
             new("scene / chart --landblock", Get("scene --landblock", "full", 1).Median / Get("chart --landblock", "full", 1).Median, "<=", 2,
-                $"compiling the scale dat's {AcShadow.Forge.ScaleSpecGenerator.BusyLandblockObjects}-object landblock over charting it, whole processes"),
+                $"compiling the scale dat's {AcShadow.Forge.Scale.ScaleSpecGenerator.BusyLandblockObjects}-object landblock over charting it, whole processes"),
             new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
                 $"per-query speed-up of the collision reference on GfxObjs of {CollisionComparison.MinPolygons}+ polygons"),
         ]);
@@ -173,7 +173,7 @@ public sealed record BenchReport(
         File.WriteAllBytes(path, [.. stream.ToArray(), (byte)'\n']);
     }
 
-    /// <summary>The table README's Performance section shows (Markdown, so it pastes as is).</summary>
+    /// <summary>The table docs/performance.md shows (Markdown, so it pastes as is).</summary>
     public void PrintTable(TextWriter o)
     {
         o.WriteLine(Invariant($"Scale dat: {Full.Setups} Setups, {Full.GfxObjs} GfxObjs, {Full.PortalBytes / 1048576.0:0} MiB (forged in {Full.GenerationSeconds:0.0} s); quarter: {Quarter.Setups} Setups, {Quarter.GfxObjs} GfxObjs, {Quarter.PortalBytes / 1048576.0:0} MiB."));

@@ -1,4 +1,4 @@
-using AcShadow.Forge;
+using AcShadow.Forge.Scale;
 
 namespace AcShadow.Bench.Harness;
 

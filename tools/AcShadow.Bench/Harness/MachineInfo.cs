@@ -2,7 +2,7 @@ using System.Runtime.InteropServices;
 
 namespace AcShadow.Bench.Harness;
 
-/// <summary>The machine a run was measured on, as README's Performance section reports it.</summary>
+/// <summary>The machine a run was measured on, as docs/performance.md reports it.</summary>
 public sealed record MachineInfo(int Cores, string Cpu, double RamGiB, string Os, string Dotnet, double LoadAverage)
 {
     public static MachineInfo Current() => new(

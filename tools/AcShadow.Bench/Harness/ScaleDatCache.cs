@@ -1,6 +1,8 @@
 using System.Diagnostics;
 using System.Globalization;
 using AcShadow.Forge;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 
 namespace AcShadow.Bench.Harness;
 
@@ -9,7 +11,7 @@ public sealed record CachedDat(string Directory, int Setups, int GfxObjs, int Se
 
 /// <summary>
 /// Forged scale dats cached by their parameters and the forge build (DIR/scale-s{N}-g{M}-seed{S}-forge{V}/,
-/// V from the forge assembly's deterministic module id): the forge is deterministic, so a folder's name says
+/// V from the deterministic module ids of the forge and AcShadow.Forging): the forge is deterministic, so a folder's name says
 /// everything about its bytes, and a changed generator never measures a stale dat. Made in a temporary folder and renamed, so an
 /// interrupted run never leaves a half-written dat in the cache.
 /// </summary>
@@ -17,7 +19,10 @@ public static class ScaleDatCache
 {
     private const string GenerationFile = "generation-seconds.txt";
 
-    private static string ForgeVersion => typeof(ScaleSpecGenerator).Assembly.ManifestModule.ModuleVersionId.ToString("N")[..8];
+    /// <summary>Both assemblies that decide the bytes: the scale spec's (the forge) and the compiler's (AcShadow.Forging).</summary>
+    private static string ForgeVersion => Build(typeof(ScaleSpecGenerator)) + Build(typeof(SpecCompiler));
+
+    private static string Build(Type type) => type.Assembly.ManifestModule.ModuleVersionId.ToString("N")[..8];
 
     public static CachedDat Get(string cacheDir, int setups, int gfxObjs, int seed, TextWriter log)
     {

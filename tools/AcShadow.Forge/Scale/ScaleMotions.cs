@@ -1,7 +1,8 @@
 using AcShadow.Core.Catalog;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Spec;
+using static AcShadow.Forge.Scale.SpecValues;
 
-namespace AcShadow.Forge;
+namespace AcShadow.Forge.Scale;
 
 /// <summary>
 /// The scale spec's motion: every door is posed by a motion table (a catalog door by its catalog table,
@@ -80,8 +81,6 @@ internal static class ScaleMotions
     }
 
     private static FrameSpec At(double x, double y, double z) => new() { Origin = [x, y, z] };
-
-    private static string Hex(uint id) => $"0x{id:X8}";
 
     private static uint Parse(string hex) => Convert.ToUInt32(hex[2..], 16);
 }

@@ -6,7 +6,7 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 
-namespace AcShadow.Forge.Spec;
+namespace AcShadow.Forging.Spec;
 
 /// <summary>
 /// Checks a <see cref="HookSpec"/> against its type's layout (<see cref="AnimationHookLayout.Fields"/>) and

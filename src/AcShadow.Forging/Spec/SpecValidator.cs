@@ -7,7 +7,7 @@ using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 
-namespace AcShadow.Forge.Spec;
+namespace AcShadow.Forging.Spec;
 
 /// <summary>
 /// Checks a <see cref="ForgeSpec"/> and converts it to dat objects. Stops at the first problem with a

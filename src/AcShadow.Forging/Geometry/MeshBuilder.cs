@@ -1,9 +1,9 @@
 using System.Globalization;
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Spec;
 
-namespace AcShadow.Forge.Geometry;
+namespace AcShadow.Forging.Geometry;
 
 /// <summary>
 /// Accumulates vertices (shared by exact position, so boxes come out watertight) and polygons for a

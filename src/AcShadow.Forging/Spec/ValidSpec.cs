@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
 
-namespace AcShadow.Forge.Spec;
+namespace AcShadow.Forging.Spec;
 
 /// <summary>A spec that passed <see cref="SpecValidator"/>: ids parsed, numbers float32 and finite.</summary>
 public sealed record ValidSpec(

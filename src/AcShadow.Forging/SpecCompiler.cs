@@ -2,10 +2,10 @@ using System.Numerics;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
-using AcShadow.Forge.Bsp;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Bsp;
+using AcShadow.Forging.Spec;
 
-namespace AcShadow.Forge;
+namespace AcShadow.Forging;
 
 /// <summary>The forged files: the portal dat always, the cell dat only when the spec has landblocks.</summary>
 public sealed record ForgedDats(byte[] Portal, byte[]? Cell, int GfxObjCount, int SetupCount, int LandblockCount)

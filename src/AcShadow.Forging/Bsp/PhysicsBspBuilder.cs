@@ -3,7 +3,7 @@ using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
 
-namespace AcShadow.Forge.Bsp;
+namespace AcShadow.Forging.Bsp;
 
 /// <summary>
 /// Builds a GfxObj's PhysicsBSP from its physics polygons, in the retail convention: the solid cells are

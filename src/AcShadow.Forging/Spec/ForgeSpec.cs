@@ -2,7 +2,7 @@ using System.Text.Json;
 using System.Text.Json.Serialization;
 using AcShadow.Fixtures.Bsp;
 
-namespace AcShadow.Forge.Spec;
+namespace AcShadow.Forging.Spec;
 
 /// <summary>
 /// The forge's input: what to put in the dats, as JSON (see docs/forge-spec.md). These records mirror

@@ -1,14 +1,14 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Fixtures.Geometry;
-using AcShadow.Forge.Geometry;
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Geometry;
+using AcShadow.Forging.Spec;
 
-namespace AcShadow.Forge;
+namespace AcShadow.Forging;
 
 /// <summary>
 /// Writes the built-in sample spec in code (a 310-polygon house is not typed by hand). Its JSON,
-/// Sample/sample.json, is what the forge embeds and builds; `forge sample --write-spec FILE`
+/// Sample/sample.json, is what this assembly embeds and the CLI and forge build; `forge sample --write-spec FILE`
 /// regenerates that file from here, and a test keeps the two identical.
 /// </summary>
 public static class SampleSpecAuthor

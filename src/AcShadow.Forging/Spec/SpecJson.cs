@@ -5,7 +5,7 @@ using System.Text.Json;
 using System.Text;
 using AcShadow.Fixtures.Bsp;
 
-namespace AcShadow.Forge.Spec;
+namespace AcShadow.Forging.Spec;
 
 /// <summary>
 /// Reads and writes <see cref="ForgeSpec"/> JSON. Strict on read (unknown properties and duplicate
@@ -30,7 +30,7 @@ public static class SpecJson
             NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals,
             DefaultIgnoreCondition = JsonIgnoreCondition.WhenWritingDefault,
             Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
-            // Source-generated metadata: the CLI that carries the forge is published ahead-of-time.
+            // Source-generated metadata: the CLI that builds the sample from it is published ahead-of-time.
             TypeInfoResolver = SpecJsonContext.Default.WithAddedModifier(OmitEmptyCollections),
         };
         options.Converters.Add(new VectorConverter());

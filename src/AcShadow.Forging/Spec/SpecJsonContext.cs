@@ -1,6 +1,6 @@
 using System.Text.Json.Serialization;
 
-namespace AcShadow.Forge.Spec;
+namespace AcShadow.Forging.Spec;
 
 /// <summary>Compile-time JSON metadata for the spec records; <see cref="SpecJson"/> adds its options and converters.</summary>
 [JsonSerializable(typeof(ForgeSpec))]

@@ -1,6 +1,6 @@
-using AcShadow.Forge.Spec;
+using AcShadow.Forging.Spec;
 
-namespace AcShadow.Forge;
+namespace AcShadow.Forging;
 
 /// <summary>
 /// The built-in sample (Sample/sample.json, embedded in this assembly) and its dats, built in memory,
@@ -8,12 +8,12 @@ namespace AcShadow.Forge;
 /// </summary>
 public static class SampleDats
 {
-    public const string ResourceName = "AcShadow.Forge.Sample.sample.json";
+    public const string ResourceName = "AcShadow.Forging.Sample.sample.json";
 
     private static readonly Lazy<string> JsonText = new(() =>
     {
         using var stream = typeof(SampleDats).Assembly.GetManifestResourceStream(ResourceName)
-            ?? throw new InvalidOperationException($"embedded resource {ResourceName} is missing from the forge assembly");
+            ?? throw new InvalidOperationException($"embedded resource {ResourceName} is missing from the AcShadow.Forging assembly");
         using var reader = new StreamReader(stream);
         return reader.ReadToEnd();
     });
