@@ -30,6 +30,11 @@ public sealed class CompiledBsp
     public bool PruningIsConservative { get; }
     public IReadOnlyList<Diagnostic> Diagnostics { get; }
 
+    private NearestPolygonIndex? _nearest;
+
+    /// <summary>Built on first use and kept: only the chart's distance ranking needs it.</summary>
+    internal NearestPolygonIndex Nearest => LazyInitializer.EnsureInitialized(ref _nearest, () => NearestPolygonIndex.Build(Polygons));
+
     private CompiledBsp(uint id, CompiledPolygon[] polygons, CompiledBspNode[] nodes, int[] leafPolygons,
         IReadOnlyList<SolidCell> solidCells, bool conservative, IReadOnlyList<Diagnostic> diagnostics)
     {

@@ -37,12 +37,7 @@ public static class SurfaceDistance
     }
 
     /// <summary>Distance from a point to the nearest polygon of a part (part space); +∞ for a part with none.</summary>
-    public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point)
-    {
-        var best = float.PositiveInfinity;
-        foreach (var polygon in bsp.Polygons) best = MathF.Min(best, ToPolygon(polygon, point));
-        return best;
-    }
+    public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point) => bsp.Nearest.Nearest(point);
 
     /// <summary>Distance from a point to the surface of a vertical cylinder (0 inside measured as depth, negative).</summary>
     public static float ToCylinder(Vector3 baseCenter, float radius, float height, Vector3 point)

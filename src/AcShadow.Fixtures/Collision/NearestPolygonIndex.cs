@@ -1,0 +1,147 @@
+using System.Collections.Immutable;
+using System.Numerics;
+
+namespace AcShadow.Fixtures.Collision;
+
+/// <summary>
+/// A box tree over a part's polygons, so the nearest polygon to a point is found without measuring every
+/// polygon. It returns exactly what measuring every polygon and keeping the minimum returns: a box is
+/// skipped only when its distance, less a margin far wider than float rounding, is still beyond the best
+/// distance found so far, and the minimum of the rest does not depend on the order it is taken in.
+/// Polygons whose vertices are not all finite are measured every time (a NaN there makes the answer NaN,
+/// as the plain minimum does).
+/// </summary>
+internal sealed class NearestPolygonIndex
+{
+    private const int LeafSize = 4;
+
+    private readonly ImmutableArray<CompiledPolygon> _polygons;
+    private readonly int[] _order;
+    private readonly int[] _unbounded;
+    private readonly Node[] _nodes;
+
+    private readonly record struct Node(Vector3 Min, Vector3 Max, int Left, int Right, int Start, int Count)
+    {
+        public bool IsLeaf => Left < 0;
+    }
+
+    private NearestPolygonIndex(ImmutableArray<CompiledPolygon> polygons, int[] order, int[] unbounded, Node[] nodes)
+    {
+        _polygons = polygons;
+        _order = order;
+        _unbounded = unbounded;
+        _nodes = nodes;
+    }
+
+    public static NearestPolygonIndex Build(ImmutableArray<CompiledPolygon> polygons)
+    {
+        var mins = new Vector3[polygons.Length];
+        var maxs = new Vector3[polygons.Length];
+        var bounded = new List<int>(polygons.Length);
+        var unbounded = new List<int>();
+        for (var i = 0; i < polygons.Length; i++)
+        {
+            var vertices = polygons[i].Vertices;
+            var finite = vertices.Length > 0;
+            Vector3 min = new(float.PositiveInfinity), max = new(float.NegativeInfinity);
+            foreach (var v in vertices)
+            {
+                finite &= float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+                min = Vector3.Min(min, v);
+                max = Vector3.Max(max, v);
+            }
+            mins[i] = min;
+            maxs[i] = max;
+            (finite ? bounded : unbounded).Add(i);
+        }
+        var order = bounded.ToArray();
+        var nodes = new List<Node>();
+        if (order.Length > 0) Split(order, 0, order.Length, mins, maxs, nodes);
+        return new NearestPolygonIndex(polygons, order, [.. unbounded], [.. nodes]);
+    }
+
+    private static int Split(int[] order, int start, int count, Vector3[] mins, Vector3[] maxs, List<Node> nodes)
+    {
+        Vector3 min = new(float.PositiveInfinity), max = new(float.NegativeInfinity);
+        for (var i = start; i < start + count; i++)
+        {
+            min = Vector3.Min(min, mins[order[i]]);
+            max = Vector3.Max(max, maxs[order[i]]);
+        }
+        var at = nodes.Count;
+        nodes.Add(new Node(min, max, -1, -1, start, count));
+        if (count <= LeafSize) return at;
+        // Halve along the box's longest axis by box centre; ties broken by polygon index so the tree is the same every run.
+        var size = max - min;
+        var axis = size.X >= size.Y && size.X >= size.Z ? 0 : size.Y >= size.Z ? 1 : 2;
+        Array.Sort(order, start, count, Comparer<int>.Create((a, b) =>
+        {
+            var ca = Axis(mins[a] + maxs[a], axis);
+            var cb = Axis(mins[b] + maxs[b], axis);
+            var c = ca.CompareTo(cb);
+            return c != 0 ? c : a.CompareTo(b);
+        }));
+        var half = count / 2;
+        var left = Split(order, start, half, mins, maxs, nodes);
+        var right = Split(order, start + half, count - half, mins, maxs, nodes);
+        nodes[at] = nodes[at] with { Left = left, Right = right };
+        return at;
+    }
+
+    private static float Axis(Vector3 v, int axis) => axis == 0 ? v.X : axis == 1 ? v.Y : v.Z;
+
+    /// <summary>The smallest <see cref="SurfaceDistance.ToPolygon"/> over the part's polygons; +∞ when it has none.</summary>
+    public float Nearest(Vector3 point)
+    {
+        var best = float.PositiveInfinity;
+        foreach (var i in _unbounded) best = MathF.Min(best, SurfaceDistance.ToPolygon(_polygons[i], point));
+        if (float.IsNaN(best) || _nodes.Length == 0) return best;
+        // Depth-first, at most one pending sibling per level: the tree is a halving, so 64 levels is more than any part has.
+        Span<int> stack = stackalloc int[64];
+        var top = 0;
+        stack[top++] = 0;
+        while (top > 0)
+        {
+            var node = _nodes[stack[--top]];
+            if (Beyond(node, point, best)) continue;
+            if (node.IsLeaf)
+            {
+                for (var k = node.Start; k < node.Start + node.Count; k++)
+                    best = MathF.Min(best, SurfaceDistance.ToPolygon(_polygons[_order[k]], point));
+                if (float.IsNaN(best)) return best;
+                continue;
+            }
+            // Nearer child last, so it is taken first and tightens the bound for the other.
+            var left = _nodes[node.Left];
+            var right = _nodes[node.Right];
+            var leftFirst = BoxDistance(left, point) <= BoxDistance(right, point);
+            stack[top++] = leftFirst ? node.Right : node.Left;
+            stack[top++] = leftFirst ? node.Left : node.Right;
+        }
+        return best;
+    }
+
+    /// <summary>
+    /// True when nothing in the box can come nearer than <paramref name="best"/>. Worked in double so huge
+    /// coordinates do not overflow, with a margin of 1e-5 of the magnitudes involved plus 1e-6 m: a polygon's
+    /// float distance is off by a few parts in 1e7 of those magnitudes at most.
+    /// </summary>
+    private static bool Beyond(in Node node, Vector3 point, float best)
+    {
+        if (!float.IsFinite(best)) return false;
+        var magnitude = Math.Max(MaxAbs(point), Math.Max(MaxAbs(node.Min), MaxAbs(node.Max)));
+        return BoxDistance(node, point) - (1e-5 * magnitude + 1e-6) > best;
+    }
+
+    private static double BoxDistance(in Node node, Vector3 p)
+    {
+        var dx = Outside(p.X, node.Min.X, node.Max.X);
+        var dy = Outside(p.Y, node.Min.Y, node.Max.Y);
+        var dz = Outside(p.Z, node.Min.Z, node.Max.Z);
+        return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    private static double Outside(float v, float min, float max) => v < min ? (double)min - v : v > max ? (double)v - max : 0d;
+
+    private static double MaxAbs(Vector3 v) => Math.Max(Math.Abs((double)v.X), Math.Max(Math.Abs((double)v.Y), Math.Abs((double)v.Z)));
+}
