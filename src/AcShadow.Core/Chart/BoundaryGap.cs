@@ -16,11 +16,26 @@ public static class BoundaryGap
     public static float Of(IReadOnlyList<PreparedShape> shapes, Vector3 center, float radius)
     {
         var best = float.PositiveInfinity;
-        foreach (var shape in shapes) best = MathF.Min(best, Distance(shape, center));
+        foreach (var shape in shapes) best = MathF.Min(best, Distance(shape, center, float.PositiveInfinity));
         return best - radius;
     }
 
-    private static float Distance(PreparedShape shape, Vector3 point)
+    /// <summary>
+    /// <see cref="Of"/> when the gap may be no wider than <paramref name="limit"/> either way (then
+    /// <c>Known</c>, the same bits); otherwise <c>Known</c> is false and the gap is certainly wider than
+    /// <paramref name="limit"/>, found without measuring BSP polygons that cannot be that near.
+    /// </summary>
+    public static (float Gap, bool Known) Within(IReadOnlyList<PreparedShape> shapes, Vector3 center, float radius, float limit)
+    {
+        // Wider than radius + limit by far more than float rounding, so "not known" really is wider than the limit.
+        var reach = (float)((radius + (double)limit) * (1 + 1e-5) + 1e-6);
+        if (!float.IsFinite(reach)) return (Of(shapes, center, radius), true);
+        var best = float.PositiveInfinity;
+        foreach (var shape in shapes) best = MathF.Min(best, Distance(shape, center, reach));
+        return (best - radius, !(best > reach));
+    }
+
+    private static float Distance(PreparedShape shape, Vector3 point, float reach)
     {
         if (shape.Polytope is { } solid)
         {
@@ -34,7 +49,9 @@ public static class BoundaryGap
         {
             case CollisionType.Bsp when shape.Bsp is { } bsp:
                 var (local, _) = shape.Pose.ToLocal(point, 0f);
-                return SurfaceDistance.ToNearestPolygon(bsp, local) * shape.Pose.Scale;
+                var scale = shape.Pose.Scale;
+                if (float.IsPositiveInfinity(reach) || !(scale > 0f)) return SurfaceDistance.ToNearestPolygon(bsp, local) * scale;
+                return SurfaceDistance.ToNearestPolygon(bsp, local, (float)(reach / (double)scale * (1 + 1e-5) + 1e-6)) * scale;
             case CollisionType.Cylinder:
                 return SurfaceDistance.ToCylinder(s.LocalPosition, s.Radius, s.CylHeight, point);
             case CollisionType.Sphere:

@@ -105,11 +105,12 @@ public static class ChartRunner
         var probes = laid.Probes;
 
         var referenceAnswers = Answers(reference, probes);
+        var referenceGaps = new GapCache(reference.Shapes, probes);
         var outcomes = new List<ModelOutcome>(models.Count);
         for (var m = 0; m < models.Count; m++)
         {
             var answers = m == 0 ? referenceAnswers : Answers(prepared[m], probes);
-            outcomes.Add(Compare(models[m].Name, prepared[m], reference, probes, referenceAnswers, answers, options, timer));
+            outcomes.Add(Compare(models[m].Name, prepared[m], reference.Shapes, referenceGaps, probes, referenceAnswers, answers, options, timer));
         }
         var cheapest = CheapestExact(outcomes);
         return new ObjectChart(subject.Setup.Id, probes, laid.GridSpacing, laid.Bounds, laid.Doorway, referenceAnswers, outcomes, cheapest, laid.Notes);
@@ -151,26 +152,20 @@ public static class ChartRunner
         return answers;
     }
 
-    private static ModelOutcome Compare(string name, PreparedModel model, PreparedModel reference, Probe[] probes, bool[] expected, bool[] answers,
+    private static ModelOutcome Compare(string name, PreparedModel model, IReadOnlyList<PreparedShape> referenceShapes, GapCache referenceGaps, Probe[] probes, bool[] expected, bool[] answers,
         ChartOptions options, IQueryTimer timer)
     {
         int agree = 0, falsePass = 0, falseBlock = 0, doorway = 0, doorPass = 0, doorBlock = 0;
-        var disagreements = new List<Disagreement>();
         for (var i = 0; i < probes.Length; i++)
         {
             var isDoor = probes[i].Kind == ProbeKind.Doorway;
             if (isDoor) doorway++;
             if (answers[i] == expected[i]) { agree++; continue; }
-            var pass = expected[i];
-            if (pass) { falsePass++; if (isDoor) doorPass++; }
+            if (expected[i]) { falsePass++; if (isDoor) doorPass++; }
             else { falseBlock++; if (isDoor) doorBlock++; }
-            var p = probes[i];
-            disagreements.Add(new Disagreement(i, p, pass, BoundaryGap.Of(reference.Shapes, p.Center, p.Radius), BoundaryGap.Of(model.Shapes, p.Center, p.Radius)));
         }
         // The nearest of each kind, so false blocks hugging the boundary (stability probes) never crowd out a false pass.
-        var nearest = disagreements.Where(d => d.FalsePass).OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel)
-            .Concat(disagreements.Where(d => !d.FalsePass).OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).Take(options.FailuresPerModel))
-            .OrderBy(d => d.Nearness).ThenBy(d => d.ProbeIndex).ToArray();
+        var nearest = NearestDisagreements.Select(probes, expected, answers, referenceGaps, referenceShapes, model.Shapes, options.FailuresPerModel);
         var timing = timer.Measure(name, model, probes, options);
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
     }

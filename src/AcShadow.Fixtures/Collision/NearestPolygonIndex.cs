@@ -90,8 +90,11 @@ internal sealed class NearestPolygonIndex
 
     private static float Axis(Vector3 v, int axis) => axis == 0 ? v.X : axis == 1 ? v.Y : v.Z;
 
-    /// <summary>The smallest <see cref="SurfaceDistance.ToPolygon"/> over the part's polygons; +∞ when it has none.</summary>
-    public float Nearest(Vector3 point)
+    /// <summary>
+    /// The smallest <see cref="SurfaceDistance.ToPolygon"/> over the part's polygons (+∞ when it has none)
+    /// when that is at most <paramref name="within"/>; otherwise some distance greater than <paramref name="within"/>.
+    /// </summary>
+    public float Nearest(Vector3 point, float within = float.PositiveInfinity)
     {
         var best = float.PositiveInfinity;
         foreach (var i in _unbounded) best = MathF.Min(best, SurfaceDistance.ToPolygon(_polygons[i], point));
@@ -103,7 +106,7 @@ internal sealed class NearestPolygonIndex
         while (top > 0)
         {
             var node = _nodes[stack[--top]];
-            if (Beyond(node, point, best)) continue;
+            if (Beyond(node, point, MathF.Min(best, within))) continue;
             if (node.IsLeaf)
             {
                 for (var k = node.Start; k < node.Start + node.Count; k++)

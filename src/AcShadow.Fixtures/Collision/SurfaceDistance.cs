@@ -39,6 +39,13 @@ public static class SurfaceDistance
     /// <summary>Distance from a point to the nearest polygon of a part (part space); +∞ for a part with none.</summary>
     public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point) => bsp.Nearest.Nearest(point);
 
+    /// <summary>
+    /// <see cref="ToNearestPolygon(CompiledBsp, Vector3)"/> when the nearest polygon is at most
+    /// <paramref name="within"/> away (the same bits); otherwise some distance greater than
+    /// <paramref name="within"/>, found without measuring polygons that cannot be that near.
+    /// </summary>
+    public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point, float within) => bsp.Nearest.Nearest(point, within);
+
     /// <summary>Distance from a point to the surface of a vertical cylinder (0 inside measured as depth, negative).</summary>
     public static float ToCylinder(Vector3 baseCenter, float radius, float height, Vector3 point)
     {
