@@ -40,18 +40,14 @@ public static class BoundaryGap
         if (shape.Polytope is { } solid)
         {
             var (inPart, _) = shape.Pose.ToLocal(point, 0f);
-            var nearest = float.PositiveInfinity;
-            foreach (var face in solid.Faces) nearest = MathF.Min(nearest, SurfaceDistance.ToPolygon(face, inPart));
-            return nearest * shape.Pose.Scale;
+            return SurfaceDistance.ToNearestFace(solid, inPart, LocalReach(reach, shape.Pose.Scale)) * shape.Pose.Scale;
         }
         var s = shape.Shape;
         switch (s.CollisionType)
         {
             case CollisionType.Bsp when shape.Bsp is { } bsp:
                 var (local, _) = shape.Pose.ToLocal(point, 0f);
-                var scale = shape.Pose.Scale;
-                if (float.IsPositiveInfinity(reach) || !(scale > 0f)) return SurfaceDistance.ToNearestPolygon(bsp, local) * scale;
-                return SurfaceDistance.ToNearestPolygon(bsp, local, (float)(reach / (double)scale * (1 + 1e-5) + 1e-6)) * scale;
+                return SurfaceDistance.ToNearestPolygon(bsp, local, LocalReach(reach, shape.Pose.Scale)) * shape.Pose.Scale;
             case CollisionType.Cylinder:
                 return SurfaceDistance.ToCylinder(s.LocalPosition, s.Radius, s.CylHeight, point);
             case CollisionType.Sphere:
@@ -60,4 +56,8 @@ public static class BoundaryGap
                 return float.PositiveInfinity;
         }
     }
+
+    /// <summary>A reach in entity metres as part-frame metres, widened past rounding; +∞ (measure in full) when the scale is not usable.</summary>
+    private static float LocalReach(float reach, float scale) =>
+        float.IsPositiveInfinity(reach) || !(scale > 0f) ? float.PositiveInfinity : (float)(reach / (double)scale * (1 + 1e-5) + 1e-6);
 }

@@ -21,6 +21,11 @@ public sealed class ConvexPolytope : ISphereOverlap
     public IReadOnlyList<Vector3> Vertices { get; }
     public IReadOnlyList<CompiledPolygon> Faces => _faces;
 
+    private NearestPolygonIndex? _nearest;
+
+    /// <summary>Built on first use and kept, as <see cref="CompiledBsp"/>'s.</summary>
+    internal NearestPolygonIndex Nearest => LazyInitializer.EnsureInitialized(ref _nearest, () => NearestPolygonIndex.Build([.. _faces]));
+
     public ConvexPolytope(IReadOnlyList<Vector3> vertices, IReadOnlyList<CompiledPolygon> faces)
     {
         Vertices = vertices;

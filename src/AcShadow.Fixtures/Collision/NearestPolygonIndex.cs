@@ -19,6 +19,9 @@ internal sealed class NearestPolygonIndex
     private readonly int[] _order;
     private readonly int[] _unbounded;
     private readonly Node[] _nodes;
+    // Per polygon: how far its vertices stray from its plane, and max(1, |normal|), for the plane bound below.
+    private readonly double[] _offPlane;
+    private readonly double[] _normalScale;
 
     private readonly record struct Node(Vector3 Min, Vector3 Max, int Left, int Right, int Start, int Count)
     {
@@ -31,6 +34,16 @@ internal sealed class NearestPolygonIndex
         _order = order;
         _unbounded = unbounded;
         _nodes = nodes;
+        _offPlane = new double[polygons.Length];
+        _normalScale = new double[polygons.Length];
+        for (var i = 0; i < polygons.Length; i++)
+        {
+            var polygon = polygons[i];
+            var off = 0d;
+            foreach (var v in polygon.Vertices) off = Math.Max(off, Math.Abs(PlaneValue(polygon, v)));
+            _offPlane[i] = off;
+            _normalScale[i] = Math.Max(1d, Math.Sqrt((double)polygon.Normal.X * polygon.Normal.X + (double)polygon.Normal.Y * polygon.Normal.Y + (double)polygon.Normal.Z * polygon.Normal.Z));
+        }
     }
 
     public static NearestPolygonIndex Build(ImmutableArray<CompiledPolygon> polygons)
@@ -110,7 +123,13 @@ internal sealed class NearestPolygonIndex
             if (node.IsLeaf)
             {
                 for (var k = node.Start; k < node.Start + node.Count; k++)
-                    best = MathF.Min(best, SurfaceDistance.ToPolygon(_polygons[_order[k]], point));
+                {
+                    var index = _order[k];
+                    var polygon = _polygons[index];
+                    // A polygon is never nearer than its plane (less how far its vertices stray from it): one dot product rules most out.
+                    if (PlaneBeyond(index, point, MathF.Min(best, within))) continue;
+                    best = MathF.Min(best, SurfaceDistance.ToPolygon(polygon, point));
+                }
                 if (float.IsNaN(best)) return best;
                 continue;
             }
@@ -135,6 +154,23 @@ internal sealed class NearestPolygonIndex
         var magnitude = Math.Max(MaxAbs(point), Math.Max(MaxAbs(node.Min), MaxAbs(node.Max)));
         return BoxDistance(node, point) - (1e-5 * magnitude + 1e-6) > best;
     }
+
+    /// <summary>
+    /// Every point x of the polygon's edges and inside has |n·x + d| at most the vertices' offset (the plane
+    /// value is linear), so |n·p + d| − offset over max(1, |n|) bounds both the distance to the polygon and
+    /// the |n·p + d| <see cref="SurfaceDistance.ToPolygon"/> returns for a point over its inside.
+    /// </summary>
+    private bool PlaneBeyond(int index, Vector3 point, float best)
+    {
+        if (!float.IsFinite(best)) return false;
+        var polygon = _polygons[index];
+        var bound = (Math.Abs(PlaneValue(polygon, point)) - _offPlane[index]) / _normalScale[index];
+        var magnitude = Math.Max(MaxAbs(point), Math.Abs((double)polygon.D)) * _normalScale[index] + _offPlane[index];
+        return bound - (1e-5 * magnitude + 1e-6) > best;
+    }
+
+    private static double PlaneValue(CompiledPolygon polygon, Vector3 p) =>
+        (double)polygon.Normal.X * p.X + (double)polygon.Normal.Y * p.Y + (double)polygon.Normal.Z * p.Z + polygon.D;
 
     private static double BoxDistance(in Node node, Vector3 p)
     {

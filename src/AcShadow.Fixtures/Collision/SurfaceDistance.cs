@@ -46,6 +46,13 @@ public static class SurfaceDistance
     /// </summary>
     public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point, float within) => bsp.Nearest.Nearest(point, within);
 
+    /// <summary>
+    /// Distance from a point (in the solid's frame) to the nearest face of a convex solid, the minimum of
+    /// <see cref="ToPolygon"/> over its faces, under the same contract as
+    /// <see cref="ToNearestPolygon(CompiledBsp, Vector3, float)"/> (<paramref name="within"/> +∞: always exact).
+    /// </summary>
+    public static float ToNearestFace(ConvexPolytope solid, Vector3 point, float within = float.PositiveInfinity) => solid.Nearest.Nearest(point, within);
+
     /// <summary>Distance from a point to the surface of a vertical cylinder (0 inside measured as depth, negative).</summary>
     public static float ToCylinder(Vector3 baseCenter, float radius, float height, Vector3 point)
     {
