@@ -21,30 +21,38 @@ internal static class NearestDisagreements
 
         List<Disagreement> Kind(bool falsePass)
         {
-            // Sorted nearest first; probes come in index order, so a newcomer must be strictly nearer than the last kept.
+            // Sorted by (nearness, probe index). Probes are taken last to first: the stability probes, laid last
+            // and hugging the boundary, set a tight cut-off early, and the grid behind them is then ruled out cheaply.
             var kept = new List<Disagreement>(perKind + 1);
-            for (var i = 0; i < probes.Length; i++)
+            for (var i = probes.Length - 1; i >= 0; i--)
             {
                 if (answers[i] == expected[i] || expected[i] != falsePass) continue;
                 var p = probes[i];
                 if (kept.Count == perKind)
                 {
-                    var limit = kept[^1].Nearness;
-                    if (float.IsNaN(limit)) break;
+                    var last = kept[^1];
+                    var limit = last.Nearness;
                     var (toReference, referenceKnown) = BoundaryGap.Within(referenceShapes, p.Center, p.Radius, limit);
                     var (toModel, modelKnown) = BoundaryGap.Within(modelShapes, p.Center, p.Radius, limit);
-                    var nearer = (referenceKnown && Before(MathF.Abs(toReference), limit)) || (modelKnown && Before(MathF.Abs(toModel), limit));
-                    if (!nearer) continue;
+                    // Not known means wider than the limit; the nearness is the smaller of the known ones.
+                    var nearness = float.PositiveInfinity;
+                    if (referenceKnown) nearness = MathF.Min(nearness, MathF.Abs(toReference));
+                    if (modelKnown) nearness = MathF.Min(nearness, MathF.Abs(toModel));
+                    if (!Before(nearness, i, limit, last.ProbeIndex)) continue;
                     kept.RemoveAt(kept.Count - 1);
                 }
                 var found = new Disagreement(i, p, falsePass, referenceGaps[i], BoundaryGap.Of(modelShapes, p.Center, p.Radius));
-                var at = kept.FindIndex(k => Before(found.Nearness, k.Nearness));
+                var at = kept.FindIndex(k => Before(found.Nearness, found.ProbeIndex, k.Nearness, k.ProbeIndex));
                 kept.Insert(at < 0 ? kept.Count : at, found);
             }
             return kept;
         }
     }
 
-    /// <summary>Strictly nearer in the order OrderBy uses for floats (NaN first).</summary>
-    private static bool Before(float a, float b) => a.CompareTo(b) < 0;
+    /// <summary>Ranked ahead in the order OrderBy(nearness).ThenBy(index) gives (a NaN nearness first).</summary>
+    private static bool Before(float nearness, int index, float otherNearness, int otherIndex)
+    {
+        var c = nearness.CompareTo(otherNearness);
+        return c < 0 || (c == 0 && index < otherIndex);
+    }
 }
