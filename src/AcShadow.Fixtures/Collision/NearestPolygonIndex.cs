@@ -105,13 +105,14 @@ internal sealed class NearestPolygonIndex
 
     /// <summary>
     /// The smallest <see cref="SurfaceDistance.ToPolygon"/> over the part's polygons (+∞ when it has none)
-    /// when that is at most <paramref name="within"/>; otherwise some distance greater than <paramref name="within"/>.
+    /// when that is at most <paramref name="within"/> and not below <paramref name="enough"/>; otherwise some
+    /// distance greater than <paramref name="within"/>, or the first found below <paramref name="enough"/>.
     /// </summary>
-    public float Nearest(Vector3 point, float within = float.PositiveInfinity)
+    public float Nearest(Vector3 point, float within = float.PositiveInfinity, float enough = float.NegativeInfinity)
     {
         var best = float.PositiveInfinity;
         foreach (var i in _unbounded) best = MathF.Min(best, SurfaceDistance.ToPolygon(_polygons[i], point));
-        if (float.IsNaN(best) || _nodes.Length == 0) return best;
+        if (float.IsNaN(best) || best < enough || _nodes.Length == 0) return best;
         // Depth-first, at most one pending sibling per level: the tree is a halving, so 64 levels is more than any part has.
         Span<int> stack = stackalloc int[64];
         var top = 0;
@@ -129,6 +130,7 @@ internal sealed class NearestPolygonIndex
                     // A polygon is never nearer than its plane (less how far its vertices stray from it): one dot product rules most out.
                     if (PlaneBeyond(index, point, MathF.Min(best, within))) continue;
                     best = MathF.Min(best, SurfaceDistance.ToPolygon(polygon, point));
+                    if (best < enough) return best;
                 }
                 if (float.IsNaN(best)) return best;
                 continue;

@@ -40,18 +40,14 @@ public static class SurfaceDistance
     public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point) => bsp.Nearest.Nearest(point);
 
     /// <summary>
-    /// <see cref="ToNearestPolygon(CompiledBsp, Vector3)"/> when the nearest polygon is at most
-    /// <paramref name="within"/> away (the same bits); otherwise some distance greater than
-    /// <paramref name="within"/>, found without measuring polygons that cannot be that near.
+    /// <see cref="ToNearestPolygon(CompiledBsp, Vector3)"/> when it lies between <paramref name="enough"/> and
+    /// <paramref name="within"/> (the same bits); otherwise only some distance beyond that range on the same
+    /// side, found without measuring what cannot change the verdict.
     /// </summary>
-    public static float ToNearestPolygon(CompiledBsp bsp, Vector3 point, float within) => bsp.Nearest.Nearest(point, within);
+    internal static float ToNearestPolygon(CompiledBsp bsp, Vector3 point, float within, float enough) => bsp.Nearest.Nearest(point, within, enough);
 
-    /// <summary>
-    /// Distance from a point (in the solid's frame) to the nearest face of a convex solid, the minimum of
-    /// <see cref="ToPolygon"/> over its faces, under the same contract as
-    /// <see cref="ToNearestPolygon(CompiledBsp, Vector3, float)"/> (<paramref name="within"/> +∞: always exact).
-    /// </summary>
-    public static float ToNearestFace(ConvexPolytope solid, Vector3 point, float within = float.PositiveInfinity) => solid.Nearest.Nearest(point, within);
+    /// <summary>The minimum of <see cref="ToPolygon"/> over a convex solid's faces (point in its frame), bounded as above.</summary>
+    internal static float ToNearestFace(ConvexPolytope solid, Vector3 point, float within, float enough) => solid.Nearest.Nearest(point, within, enough);
 
     /// <summary>Distance from a point to the surface of a vertical cylinder (0 inside measured as depth, negative).</summary>
     public static float ToCylinder(Vector3 baseCenter, float radius, float height, Vector3 point)
