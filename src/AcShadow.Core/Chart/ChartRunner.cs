@@ -58,7 +58,7 @@ public static class ChartRunner
             for (var i = 0; i < count; i++)
             {
                 cancellation.ThrowIfCancellationRequested();
-                Deliver(subjectAt(i) is { } subject ? Chart(subject, options, models, timer) : null);
+                Deliver(subjectAt(i) is { } subject ? Chart(subject, options, models, timer, cancellation) : null);
             }
             return tally;
         }
@@ -81,7 +81,7 @@ public static class ChartRunner
                     i = ++claimed;
                 }
                 if (i >= count) return;
-                var chart = subjectAt(i) is { } subject ? Chart(subject, options, models, timer) : null;
+                var chart = subjectAt(i) is { } subject ? Chart(subject, options, models, timer, cancellation) : null;
                 lock (gate)
                 {
                     ready[i] = chart;
@@ -97,7 +97,12 @@ public static class ChartRunner
         return tally;
     }
 
-    public static ObjectChart Chart(ChartSubject subject, ChartOptions options, IReadOnlyList<IShapeModel> models, IQueryTimer timer)
+    /// <summary>
+    /// Charts one object. <paramref name="cancellation"/> is heard between models, so Ctrl-C on a huge object
+    /// waits for one model's answers and timing, not the whole object; nothing of a cancelled object is kept.
+    /// </summary>
+    public static ObjectChart Chart(ChartSubject subject, ChartOptions options, IReadOnlyList<IShapeModel> models, IQueryTimer timer,
+        CancellationToken cancellation = default)
     {
         var prepared = models.Select(m => Prepare(m, subject)).ToArray();
         var reference = prepared[0];
@@ -109,6 +114,7 @@ public static class ChartRunner
         var outcomes = new List<ModelOutcome>(models.Count);
         for (var m = 0; m < models.Count; m++)
         {
+            cancellation.ThrowIfCancellationRequested();
             var answers = m == 0 ? referenceAnswers : Answers(prepared[m], probes);
             outcomes.Add(Compare(models[m].Name, prepared[m], reference.Shapes, referenceGaps, probes, referenceAnswers, answers, options, timer));
         }

@@ -10,7 +10,8 @@ namespace AcShadow.Core.Fitting;
 /// neighbouring triangles merged into one convex polygon per face. Each face takes the retail plane of a
 /// physics polygon lying in it when there is one (so a hull that is the part itself answers with the
 /// part's own plane bits), else the plane CPolygon::make_plane gives its corners. Points that all lie in
-/// one plane give a flat hull: the outline wound both ways. Fewer than three non-collinear points: null.
+/// one plane give a flat hull: the outline wound both ways. Fewer than three non-collinear points, or a set
+/// whose hull float rounding cannot settle (the faces a point sees are not one patch): null.
 /// </summary>
 public static class ConvexHullBuilder
 {
@@ -68,18 +69,25 @@ public static class ConvexHullBuilder
         Add(i0, i2, i3);
 
         var visible = new List<int>();
+        var horizon = new List<(int, int)>();
         for (var i = 0; i < p.Length; i++)
         {
             if (i == i0 || i == i1 || i == i2 || i == i3) continue;
-            visible.Clear();
-            for (var f = 0; f < faces.Count; f++)
-                if (faces[f].Alive && faces[f].Distance(p[i]) > tol) visible.Add(f);
+            // Near a flat spot the faces a point sees may not be one patch (a face flat with it, within the
+            // tolerance, parts two it sees), so their rim is not one loop and the surface would tear. Such a point
+            // is asked again with other margins (below); one still torn at every margin leaves the part without a
+            // hull rather than with a torn one.
+            var settled = false;
+            foreach (var margin in Margins)
+            {
+                Visible(faces, p[i], tol * margin, visible);
+                if (visible.Count == 0) { settled = true; break; }
+                FillHoles(faces, edges, visible);
+                Rim(faces, edges, visible, horizon);
+                if (IsOneLoop(horizon)) { settled = true; break; }
+            }
+            if (!settled || faces.Count + horizon.Count > MaxFaces(p.Length)) return null;
             if (visible.Count == 0) continue;
-            var seen = visible.ToHashSet();
-            var horizon = new List<(int, int)>();
-            foreach (var f in visible)
-                foreach (var (a, b) in EdgesOf(faces[f]))
-                    if (!edges.TryGetValue((b, a), out var twin) || !seen.Contains(twin)) horizon.Add((a, b));
             foreach (var f in visible)
             {
                 faces[f].Alive = false;
@@ -98,6 +106,74 @@ public static class ConvexHullBuilder
             }
         }
         return Merge(points, p, faces.Where(f => f.Alive).ToList(), edges, faces, retailPlanes, tol);
+    }
+
+    /// <summary>
+    /// Margins (× the tolerance) a point's visible faces are asked with, until their rim is one loop: first
+    /// the tolerance; then also the faces it lies in (−1: two seen faces that met only at a corner across a
+    /// face flat with the point join up); then wider ones (a face seen by a hair drops out).
+    /// </summary>
+    private static readonly double[] Margins = [1, -1, 10, 100];
+
+    private static void Visible(List<Face> faces, Vector3d point, double margin, List<int> visible)
+    {
+        visible.Clear();
+        for (var f = 0; f < faces.Count; f++)
+            if (faces[f].Alive && faces[f].Distance(point) > margin) visible.Add(f);
+    }
+
+    /// <summary>
+    /// A face the point does not see whose every neighbour it sees (a sliver left flat or flipped by
+    /// rounding) would leave a second loop in the rim: it goes with its neighbours.
+    /// </summary>
+    private static void FillHoles(List<Face> faces, Dictionary<(int, int), int> edges, List<int> visible)
+    {
+        var seen = visible.ToHashSet();
+        for (var changed = true; changed;)
+        {
+            changed = false;
+            foreach (var f in seen.ToArray())
+                foreach (var (a, b) in EdgesOf(faces[f]))
+                {
+                    if (!edges.TryGetValue((b, a), out var other) || seen.Contains(other) || !faces[other].Alive) continue;
+                    if (EdgesOf(faces[other]).All(e => edges.TryGetValue((e.Item2, e.Item1), out var n) && seen.Contains(n)))
+                    {
+                        seen.Add(other);
+                        visible.Add(other);
+                        changed = true;
+                    }
+                }
+        }
+    }
+
+    /// <summary>The edges of the visible faces whose other side is not visible: where the new faces attach.</summary>
+    private static void Rim(List<Face> faces, Dictionary<(int, int), int> edges, List<int> visible, List<(int, int)> rim)
+    {
+        rim.Clear();
+        var seen = visible.ToHashSet();
+        foreach (var f in visible)
+            foreach (var (a, b) in EdgesOf(faces[f]))
+                if (!edges.TryGetValue((b, a), out var twin) || !seen.Contains(twin)) rim.Add((a, b));
+    }
+
+    /// <summary>A hull of n points has at most 2n − 4 faces; the faces list keeps the dead ones too, so this allows many times that.</summary>
+    private static int MaxFaces(int points) => 64 * points + 1024;
+
+    /// <summary>True when every rim vertex starts exactly one edge and ends exactly one, and the edges form one cycle.</summary>
+    private static bool IsOneLoop(List<(int A, int B)> rim)
+    {
+        if (rim.Count < 3) return false;
+        var next = new Dictionary<int, int>(rim.Count);
+        foreach (var (a, b) in rim) if (!next.TryAdd(a, b)) return false;
+        // Walk from the first vertex: one cycle through all of them comes back exactly at the last step.
+        var start = rim[0].A;
+        var at = start;
+        for (var k = 1; k <= rim.Count; k++)
+        {
+            if (!next.TryGetValue(at, out at)) return false;
+            if (at == start) return k == rim.Count;
+        }
+        return false;
     }
 
     private static IEnumerable<(int, int)> EdgesOf(Face f) => [(f.A, f.B), (f.B, f.C), (f.C, f.A)];

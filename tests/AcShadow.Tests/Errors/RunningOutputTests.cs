@@ -178,7 +178,7 @@ public class RunningOutputTests
     [Theory]
     [InlineData("1")]
     [InlineData("2")]
-    public void Ctrl_C_during_a_chart_finishes_the_object_says_what_was_written_leaves_no_temporary_and_the_next_run_completes_the_folder(string jobs)
+    public void Ctrl_C_during_a_chart_stops_at_once_says_what_was_written_leaves_no_temporary_and_the_next_run_completes_the_folder(string jobs)
     {
         using var dir = new TempDir();
         var dats = WriteLongDat(dir);

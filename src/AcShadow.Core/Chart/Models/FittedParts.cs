@@ -32,7 +32,7 @@ internal static class FittedParts
             var planes = polygons.Select(p => new Plane(p.Normal, p.D)).ToArray();
             if (fit(vertices, planes) is not { } solid)
             {
-                diagnostics.Add(new Diagnostic(Unfittable, $"{part.Name}: its {vertices.Length} physics vertices span no solid for {what}; left out"));
+                diagnostics.Add(new Diagnostic(Unfittable, $"{part.Name}: its {vertices.Length} physics vertices give no solid for {what} (all on a line or in a point, or a hull float rounding cannot settle); left out"));
                 continue;
             }
             queries.Add(new PosedQuery(part.Pose, solid.Query));
