@@ -116,7 +116,7 @@ public static class ChartRunner
         {
             cancellation.ThrowIfCancellationRequested();
             var answers = m == 0 ? referenceAnswers : Answers(prepared[m], probes);
-            outcomes.Add(Compare(models[m].Name, prepared[m], reference.Shapes, referenceGaps, probes, referenceAnswers, answers, options, timer));
+            outcomes.Add(Compare(models[m].Name, prepared[m], referenceGaps, probes, referenceAnswers, answers, options, timer));
         }
         var cheapest = CheapestExact(outcomes);
         return new ObjectChart(subject.Setup.Id, probes, laid.GridSpacing, laid.Bounds, laid.Doorway, referenceAnswers, outcomes, cheapest, laid.Notes);
@@ -158,7 +158,7 @@ public static class ChartRunner
         return answers;
     }
 
-    private static ModelOutcome Compare(string name, PreparedModel model, IReadOnlyList<PreparedShape> referenceShapes, GapCache referenceGaps, Probe[] probes, bool[] expected, bool[] answers,
+    private static ModelOutcome Compare(string name, PreparedModel model, GapCache referenceGaps, Probe[] probes, bool[] expected, bool[] answers,
         ChartOptions options, IQueryTimer timer)
     {
         int agree = 0, falsePass = 0, falseBlock = 0, doorway = 0, doorPass = 0, doorBlock = 0;
@@ -171,7 +171,7 @@ public static class ChartRunner
             else { falseBlock++; if (isDoor) doorBlock++; }
         }
         // The nearest of each kind, so false blocks hugging the boundary (stability probes) never crowd out a false pass.
-        var nearest = NearestDisagreements.Select(probes, expected, answers, referenceGaps, referenceShapes, model.Shapes, options.FailuresPerModel);
+        var nearest = NearestDisagreements.Select(probes, expected, answers, referenceGaps, model.Shapes, options.FailuresPerModel);
         var timing = timer.Measure(name, model, probes, options);
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
     }

@@ -8,6 +8,9 @@ namespace AcShadow.Core.Chart;
 /// </summary>
 internal sealed class GapCache(IReadOnlyList<PreparedShape> shapes, Probe[] probes)
 {
+    /// <summary>The geometry the gaps are measured to.</summary>
+    public IReadOnlyList<PreparedShape> Shapes => shapes;
+
     private readonly float[] _gaps = new float[probes.Length];
     private readonly bool[] _known = new bool[probes.Length];
 

@@ -12,7 +12,7 @@ namespace AcShadow.Core.Chart;
 internal static class NearestDisagreements
 {
     public static Disagreement[] Select(Probe[] probes, bool[] expected, bool[] answers, GapCache referenceGaps,
-        IReadOnlyList<PreparedShape> referenceShapes, IReadOnlyList<PreparedShape> modelShapes, int perKind)
+        IReadOnlyList<PreparedShape> modelShapes, int perKind)
     {
         if (perKind == 0) return [];
         var passes = Kind(falsePass: true);
@@ -32,7 +32,7 @@ internal static class NearestDisagreements
                 {
                     var last = kept[^1];
                     var limit = last.Nearness;
-                    var (toReference, referenceKnown) = BoundaryGap.Within(referenceShapes, p.Center, p.Radius, limit);
+                    var (toReference, referenceKnown) = BoundaryGap.Within(referenceGaps.Shapes, p.Center, p.Radius, limit);
                     var (toModel, modelKnown) = BoundaryGap.Within(modelShapes, p.Center, p.Radius, limit);
                     // Not known means wider than the limit; the nearness is the smaller of the known ones.
                     var nearness = float.PositiveInfinity;
