@@ -121,6 +121,7 @@ public static class ChartCommand
         int charted = 0, mapsWritten = 0;
         long bytes = 0, probes = 0;
         var cheapest = new List<string>();
+        var warnings = new WarningSummary(console.Error);
         ChartTally tally = null!;
         try
         {
@@ -137,8 +138,7 @@ public static class ChartCommand
                     failureRows.Write(FailuresCsv.Header + "\n");
                     tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
                     {
-                        DiagnosticPrinter.Print(console.Error, JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics);
-                        foreach (var note in chart.Notes) console.Error.WriteLine($"warning: {JsonIds.Format(chart.SetupId)}: {note}");
+                        warnings.Add(JsonIds.Format(chart.SetupId), [.. chart.Models[0].Diagnostics.Select(d => $"{d.Code}: {d.Message}"), .. chart.Notes]);
                         chartRows.Write(ChartCsv.Rows(chart));
                         failureRows.Write(FailuresCsv.Rows(chart));
                         // The previous run's tables describe other maps: they go before the first map is
@@ -184,7 +184,7 @@ public static class ChartCommand
             {
                 console.Interrupted.ThrowIfCancellationRequested();
                 var cellChart = CellChart.Of(cell, structures, options, cellTimer);
-                DiagnosticPrinter.Print(console.Error, JsonIds.Format(cell.Id), cellChart.Cell.Diagnostics);
+                warnings.Add(JsonIds.Format(cell.Id), [.. cellChart.Cell.Diagnostics.Select(d => $"{d.Code}: {d.Message}")]);
                 cellCharts.Add(cellChart);
             }
             bytes += AtomicOutput.Write(outDir, CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));
@@ -211,6 +211,7 @@ public static class ChartCommand
             w.WriteLine($"  skipped {group.Count()} ({group.Key}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}");
         if (unreadable.Count > 0)
             w.WriteLine($"  skipped {unreadable.Count} (unreadable, see the warnings): {IdSummary.Of(unreadable.Order().ToArray())}");
+        if (warnings.Summary() is { } warned) w.WriteLine($"  {warned}");
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wrote {4 + mapsWritten + (cellCharts.Count > 0 ? 1 : 0)} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
         return ExitCodes.Ok;

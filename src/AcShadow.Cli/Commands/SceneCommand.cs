@@ -94,10 +94,11 @@ public static class SceneCommand
         {
             progress.Finish();
         }
+        var warnings = new WarningSummary(console.Error);
         foreach (var (key, c) in report.Compiled)
-            DiagnosticPrinter.Print(console.Error, JsonIds.Format(key.Id), c.Diagnostics);
+            warnings.Add(JsonIds.Format(key.Id), [.. c.Diagnostics.Select(d => $"{d.Code}: {d.Message}")]);
         foreach (var cell in report.Cells)
-            DiagnosticPrinter.Print(console.Error, JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
+            warnings.Add(JsonIds.Format(cell.Cell.Id), [.. cell.Diagnostics.Select(d => $"{d.Code}: {d.Message}")]);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
         ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
@@ -119,6 +120,7 @@ public static class SceneCommand
         w.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  probes checked: {probes.Total} ({probes})"));
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  whole scene over {t.Positions} mover positions: all-retail {t.Retail.MedianNs:0.0} ns, compiled {t.Compiled.MedianNs:0.0} ns per position (median; {t.RetailOps:0.0} and {t.CompiledOps:0.0} counted operations); compiled agrees on {t.Agree} ({t.AgreementPercent:0.000}%), {t.FalsePass} false pass, {t.FalseBlock} false block"));
+        if (warnings.Summary() is { } warned) w.WriteLine($"  {warned}");
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wrote {files.Count} file(s) ({bytes} bytes, {CompiledSceneWriter.BspGfxObjs(report).Count} GfxObj and {report.Cells.Count(c => c.Bsp is not null)} cell BSP dump(s)) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
         return ExitCodes.Ok;

@@ -16,7 +16,8 @@ public static class BoundaryGap
     public static float Of(IReadOnlyList<PreparedShape> shapes, Vector3 center, float radius)
     {
         var best = float.PositiveInfinity;
-        foreach (var shape in shapes) best = MathF.Min(best, Distance(shape, center, float.PositiveInfinity, float.NegativeInfinity));
+        // Indexed, not foreach: an interface's enumerator is allocated on every call, and this runs per ranked probe.
+        for (var i = 0; i < shapes.Count; i++) best = MathF.Min(best, Distance(shapes[i], center, float.PositiveInfinity, float.NegativeInfinity));
         return best - radius;
     }
 
@@ -33,9 +34,9 @@ public static class BoundaryGap
         var enough = (float)((radius - (double)limit) * (1 - 1e-5) - 1e-6);
         if (!float.IsFinite(reach) || !float.IsFinite(enough)) return (Of(shapes, center, radius), true);
         var best = float.PositiveInfinity;
-        foreach (var shape in shapes)
+        for (var i = 0; i < shapes.Count; i++)
         {
-            best = MathF.Min(best, Distance(shape, center, reach, enough));
+            best = MathF.Min(best, Distance(shapes[i], center, reach, enough));
             if (best < enough) return (best - radius, false);
         }
         return (best - radius, !(best > reach));

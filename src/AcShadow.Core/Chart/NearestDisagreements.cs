@@ -28,22 +28,28 @@ internal static class NearestDisagreements
             {
                 if (answers[i] == expected[i] || expected[i] != falsePass) continue;
                 var p = probes[i];
+                float? modelGap = null;
                 if (kept.Count == perKind)
                 {
                     var last = kept[^1];
                     var limit = last.Nearness;
-                    var (toReference, referenceKnown) = BoundaryGap.Within(referenceGaps.Shapes, p.Center, p.Radius, limit);
-                    var (toModel, modelKnown) = BoundaryGap.Within(modelShapes, p.Center, p.Radius, limit);
+                    var (toReference, referenceKnown) = referenceGaps.Within(i, limit);
+                    // A known reference gap bounds the model's search too: only a nearer model surface changes the nearness.
+                    var modelLimit = referenceKnown ? MathF.Min(limit, MathF.Abs(toReference)) : limit;
+                    var (toModel, modelKnown) = BoundaryGap.Within(modelShapes, p.Center, p.Radius, modelLimit);
                     // Not known means wider than the limit; the nearness is the smaller of the known ones.
                     var nearness = float.PositiveInfinity;
                     if (referenceKnown) nearness = MathF.Min(nearness, MathF.Abs(toReference));
                     if (modelKnown) nearness = MathF.Min(nearness, MathF.Abs(toModel));
                     if (!Before(nearness, i, limit, last.ProbeIndex)) continue;
                     kept.RemoveAt(kept.Count - 1);
+                    if (modelKnown) modelGap = toModel;
                 }
-                var found = new Disagreement(i, p, falsePass, referenceGaps[i], BoundaryGap.Of(modelShapes, p.Center, p.Radius));
-                var at = kept.FindIndex(k => Before(found.Nearness, found.ProbeIndex, k.Nearness, k.ProbeIndex));
-                kept.Insert(at < 0 ? kept.Count : at, found);
+                var found = new Disagreement(i, p, falsePass, referenceGaps[i], modelGap ?? BoundaryGap.Of(modelShapes, p.Center, p.Radius));
+                // A plain loop, not a lambda: a closure over `found` would be allocated for every probe looked at.
+                var at = 0;
+                while (at < kept.Count && !Before(found.Nearness, found.ProbeIndex, kept[at].Nearness, kept[at].ProbeIndex)) at++;
+                kept.Insert(at, found);
             }
             return kept;
         }

@@ -144,9 +144,13 @@ public static class StabilityProbes
     private static int Divisions(Vector3 a, Vector3 b, Vector3 c, float step)
     {
         var longest = MathF.Sqrt(MathF.Max(Vector3DistanceSquared(a, b), MathF.Max(Vector3DistanceSquared(b, c), Vector3DistanceSquared(a, c))));
-        var k = (int)MathF.Ceiling(longest / step);
+        // Capped, and squared in long: a damaged part's edge can be 1e38 m or +∞ long, and
+        // an int k squared there overflowed, passed the limit and laid points without end.
+        var wanted = MathF.Ceiling(longest / step);
+        if (float.IsNaN(wanted)) return 0;
+        var k = (long)MathF.Min(wanted, 1 << 20);
         while (k > 1 && (k + 1) * (k + 2) / 2 > MaxPointsPerPolygon) k /= 2;
-        return k;
+        return (int)k;
     }
 
     /// <summary>How many points <see cref="Lattice"/> yields, without yielding them.</summary>

@@ -32,8 +32,11 @@ public sealed class CompiledBsp
 
     private NearestPolygonIndex? _nearest;
 
-    /// <summary>Built on first use and kept: only the chart's distance ranking needs it.</summary>
-    internal NearestPolygonIndex Nearest => LazyInitializer.EnsureInitialized(ref _nearest, () => NearestPolygonIndex.Build(Polygons));
+    /// <summary>
+    /// Built on first use and kept: only the chart's distance ranking needs it. Read without a delegate, which
+    /// would be allocated on every call, and the ranking asks once per probe.
+    /// </summary>
+    internal NearestPolygonIndex Nearest => Volatile.Read(ref _nearest) ?? (Interlocked.CompareExchange(ref _nearest, NearestPolygonIndex.Build(Polygons), null) ?? _nearest);
 
     private CompiledBsp(uint id, CompiledPolygon[] polygons, CompiledBspNode[] nodes, int[] leafPolygons,
         IReadOnlyList<SolidCell> solidCells, bool conservative, IReadOnlyList<Diagnostic> diagnostics)

@@ -23,8 +23,8 @@ public sealed class ConvexPolytope : ISphereOverlap
 
     private NearestPolygonIndex? _nearest;
 
-    /// <summary>Built on first use and kept, as <see cref="CompiledBsp"/>'s.</summary>
-    internal NearestPolygonIndex Nearest => LazyInitializer.EnsureInitialized(ref _nearest, () => NearestPolygonIndex.Build([.. _faces]));
+    /// <summary>Built on first use and kept, as <see cref="CompiledBsp"/>'s (no delegate per call: it is asked once per ranked probe).</summary>
+    internal NearestPolygonIndex Nearest => Volatile.Read(ref _nearest) ?? (Interlocked.CompareExchange(ref _nearest, NearestPolygonIndex.Build([.. _faces]), null) ?? _nearest);
 
     public ConvexPolytope(IReadOnlyList<Vector3> vertices, IReadOnlyList<CompiledPolygon> faces)
     {

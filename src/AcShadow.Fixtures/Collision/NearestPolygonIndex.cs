@@ -22,6 +22,8 @@ internal sealed class NearestPolygonIndex
     // Per polygon: how far its vertices stray from its plane, and max(1, |normal|), for the plane bound below.
     private readonly double[] _offPlane;
     private readonly double[] _normalScale;
+    // Per node: the largest coordinate magnitude of its box, for the rounding margin in Beyond.
+    private readonly double[] _nodeMagnitude;
 
     private readonly record struct Node(Vector3 Min, Vector3 Max, int Left, int Right, int Start, int Count)
     {
@@ -34,6 +36,7 @@ internal sealed class NearestPolygonIndex
         _order = order;
         _unbounded = unbounded;
         _nodes = nodes;
+        _nodeMagnitude = Array.ConvertAll(nodes, n => Math.Max(MaxAbs(n.Min), MaxAbs(n.Max)));
         _offPlane = new double[polygons.Length];
         _normalScale = new double[polygons.Length];
         for (var i = 0; i < polygons.Length; i++)
@@ -114,13 +117,18 @@ internal sealed class NearestPolygonIndex
         foreach (var i in _unbounded) best = MathF.Min(best, SurfaceDistance.ToPolygon(_polygons[i], point));
         if (float.IsNaN(best) || best < enough || _nodes.Length == 0) return best;
         // Depth-first, at most one pending sibling per level: the tree is a halving, so 64 levels is more than any part has.
+        // Each pending node keeps its box distance, worked out once when it was pushed.
         Span<int> stack = stackalloc int[64];
+        Span<double> distances = stackalloc double[64];
+        var pointMagnitude = MaxAbs(point);
         var top = 0;
-        stack[top++] = 0;
+        stack[top] = 0;
+        distances[top++] = BoxDistance(_nodes[0], point);
         while (top > 0)
         {
-            var node = _nodes[stack[--top]];
-            if (Beyond(node, point, MathF.Min(best, within))) continue;
+            var at = stack[--top];
+            var node = _nodes[at];
+            if (Beyond(distances[top], Math.Max(pointMagnitude, _nodeMagnitude[at]), MathF.Min(best, within))) continue;
             if (node.IsLeaf)
             {
                 for (var k = node.Start; k < node.Start + node.Count; k++)
@@ -128,7 +136,7 @@ internal sealed class NearestPolygonIndex
                     var index = _order[k];
                     var polygon = _polygons[index];
                     // A polygon is never nearer than its plane (less how far its vertices stray from it): one dot product rules most out.
-                    if (PlaneBeyond(index, point, MathF.Min(best, within))) continue;
+                    if (PlaneBeyond(index, point, pointMagnitude, MathF.Min(best, within))) continue;
                     best = MathF.Min(best, SurfaceDistance.ToPolygon(polygon, point));
                     if (best < enough) return best;
                 }
@@ -136,11 +144,13 @@ internal sealed class NearestPolygonIndex
                 continue;
             }
             // Nearer child last, so it is taken first and tightens the bound for the other.
-            var left = _nodes[node.Left];
-            var right = _nodes[node.Right];
-            var leftFirst = BoxDistance(left, point) <= BoxDistance(right, point);
-            stack[top++] = leftFirst ? node.Right : node.Left;
-            stack[top++] = leftFirst ? node.Left : node.Right;
+            var toLeft = BoxDistance(_nodes[node.Left], point);
+            var toRight = BoxDistance(_nodes[node.Right], point);
+            var leftFirst = toLeft <= toRight;
+            stack[top] = leftFirst ? node.Right : node.Left;
+            distances[top++] = leftFirst ? toRight : toLeft;
+            stack[top] = leftFirst ? node.Left : node.Right;
+            distances[top++] = leftFirst ? toLeft : toRight;
         }
         return best;
     }
@@ -150,24 +160,20 @@ internal sealed class NearestPolygonIndex
     /// coordinates do not overflow, with a margin of 1e-5 of the magnitudes involved plus 1e-6 m: a polygon's
     /// float distance is off by a few parts in 1e7 of those magnitudes at most.
     /// </summary>
-    private static bool Beyond(in Node node, Vector3 point, float best)
-    {
-        if (!float.IsFinite(best)) return false;
-        var magnitude = Math.Max(MaxAbs(point), Math.Max(MaxAbs(node.Min), MaxAbs(node.Max)));
-        return BoxDistance(node, point) - (1e-5 * magnitude + 1e-6) > best;
-    }
+    private static bool Beyond(double boxDistance, double magnitude, float best) =>
+        float.IsFinite(best) && boxDistance - (1e-5 * magnitude + 1e-6) > best;
 
     /// <summary>
     /// Every point x of the polygon's edges and inside has |n·x + d| at most the vertices' offset (the plane
     /// value is linear), so |n·p + d| − offset over max(1, |n|) bounds both the distance to the polygon and
     /// the |n·p + d| <see cref="SurfaceDistance.ToPolygon"/> returns for a point over its inside.
     /// </summary>
-    private bool PlaneBeyond(int index, Vector3 point, float best)
+    private bool PlaneBeyond(int index, Vector3 point, double pointMagnitude, float best)
     {
         if (!float.IsFinite(best)) return false;
         var polygon = _polygons[index];
         var bound = (Math.Abs(PlaneValue(polygon, point)) - _offPlane[index]) / _normalScale[index];
-        var magnitude = Math.Max(MaxAbs(point), Math.Abs((double)polygon.D)) * _normalScale[index] + _offPlane[index];
+        var magnitude = Math.Max(pointMagnitude, Math.Abs((double)polygon.D)) * _normalScale[index] + _offPlane[index];
         return bound - (1e-5 * magnitude + 1e-6) > best;
     }
 

@@ -44,6 +44,30 @@ public class ChartAtScaleTests
     }
 
     [Fact]
+    public void A_chart_of_many_warned_objects_prints_the_first_ten_objects_warnings_and_counts_every_warning_by_code()
+    {
+        // Fourteen Setups whose HasPhysicsBSP flag is clear over a part with a BSP (a flag-mismatch warning each),
+        // and the healthy one: a whole dat's chart would print thousands of such lines.
+        var ids = Enumerable.Range(0, 14).Select(i => 0x02000100u + (uint)i).ToArray();
+        using var dat = BrokenDats.Folder(BrokenDats.Portal(
+            [.. ids.Select(id => BrokenDats.Bytes(BrokenDats.SetupOf(id, BrokenDats.HealthyGfxObj) with { Flags = default }))]));
+        using var dir = new TempDir();
+
+        var run = CliRun.Of("chart", "--all", "--dat", dat.Path, "--out", dir.Path, "--quiet");
+
+        Assert.Equal(0, run.ExitCode);
+        var warned = run.ErrorLines.Where(l => l.StartsWith("warning: 0x", StringComparison.Ordinal)).ToArray();
+        var perObject = warned.Length / 10;
+        Assert.Equal(10 * perObject, warned.Length);
+        Assert.True(perObject >= 1, run.Error);
+        Assert.All(warned, l => Assert.Contains(": flag-mismatch: ", l));
+        Assert.Equal(10, warned.Select(l => l.Split(':')[1]).Distinct().Count());
+        Assert.Single(run.ErrorLines, l => l.StartsWith("warning: more objects have warnings; only the first 10 objects' are shown", StringComparison.Ordinal));
+        // The summary counts all fourteen objects' warnings, the ten shown and the four not.
+        Assert.Contains($"  {14 * perObject} warning(s) in 14 object(s): flag-mismatch {14 * perObject} (the first 10 objects' in full on stderr)", run.Out.Split('\n'));
+    }
+
+    [Fact]
     public void The_grid_stays_under_its_probe_limit_however_large_the_object()
     {
         var options = new ChartOptions();
@@ -124,6 +148,26 @@ public class ChartAtScaleTests
     }
 
     [Fact]
+    public void A_part_with_a_vertex_ten_million_km_away_charts_in_bounded_memory()
+    {
+        // Fuzz seed 1, case 36265: bit flips sent one vertex of a part 1.7e10 m away. Its face lattice was
+        // sized by squaring an int that overflowed there, so stability probes were laid without end (14 GB
+        // within 24 s, then the kernel's OOM killer). Here a triangle's corner goes as far, in its own plane: one
+        // triangle's lattice, miscounted, wraps the probe count negative, so nothing was coarsened either.
+        using var dat = BrokenDats.Folder(BrokenDats.Portal(
+            BrokenDats.Bytes(BrokenDats.SetupOf(0x02000002, 0x01000002)),
+            BrokenDats.Bytes(BrokenDats.Box(0x01000002, v => { v[2] = new Vector3(0.5f, 1.7e10f, 0); return v; }, polygonVertices: [0, 1, 2]))));
+        using var dir = new TempDir();
+
+        var allocated = GC.GetAllocatedBytesForCurrentThread();
+        var run = CliRun.Of("chart", "--setup", "0x02000002", "--dat", dat.Path, "--out", dir.Path, "--quiet");
+        allocated = GC.GetAllocatedBytesForCurrentThread() - allocated;
+
+        Assert.True(run.ExitCode == 0, run.Out + run.Error);
+        Assert.True(allocated < 128L << 20, $"allocated {allocated >> 20} MiB");
+    }
+
+    [Fact]
     public void A_failure_map_wider_than_its_cell_limit_merges_cells_and_a_false_pass_is_never_merged_away()
     {
         // A flat 201 × 201 layer (40,401 grid probes), all clear, but for one false pass and one false block.
@@ -148,7 +192,10 @@ public class ChartAtScaleTests
         Assert.Contains("3 × 3 per cell", svg);
         var fills = System.Xml.Linq.XDocument.Parse(svg).Descendants().Where(e => e.Name.LocalName == "rect")
             .Select(e => (string?)e.Attribute("fill")).ToArray();
-        Assert.InRange(fills.Length, 2 * 67 * 67, 2 * 67 * 67 + 10);
+        // Each row's neighbouring cells of one verdict are one rectangle: 67 rows a panel, and a row holding a
+        // lone verdict is three runs (clear, it, clear). Reference: one such row; model: two. Plus the legend's
+        // four swatches, the two panels' frames and the page's background.
+        Assert.Equal(67 + 2 + (67 + 4) + 4 + 2 + 1, fills.Length);
         Assert.Equal(1 + 1, fills.Count(f => f == "#d62728"));    // the model's merged false pass, and the legend's swatch
         Assert.Equal(1 + 1, fills.Count(f => f == "#1f77b4"));    // its false block, and the legend's
         Assert.Equal(1 + 1, fills.Count(f => f == "#5a5a5a"));    // the reference blocking in its own panel, and the legend's
