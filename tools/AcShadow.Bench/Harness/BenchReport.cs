@@ -64,6 +64,10 @@ public sealed record BenchReport(
             new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
                 $"per-query speed-up of the collision reference on GfxObjs of {CollisionComparison.MinPolygons}+ polygons"),
         ]);
+        // Not measured by --small (CI times nothing).
+        if (timings.FirstOrDefault(t => t.Name == "chart --all") is { } chartAll)
+            ratios.Add(new($"chart --all, {cores} jobs (full), minutes", chartAll.Median / 60, "<=", 30,
+                $"the whole scale dat charted at default spacing and probe radius, {chartAll.PeakMedianMiB:0} MiB peak"));
         ratios.AddRange(measured ?? []);
         return new BenchReport(options, machine, started, finished, full, quarter, timings, collision, checks, ratios);
     }
