@@ -117,7 +117,10 @@ public static class ChartCommand
         }
 
         var models = ShapeModels.All.Select(m => m.Name).ToArray();
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || objectIds.Length < 2, "objects charted", "chart");
+        // Objects differ in size a thousandfold and are not in size order: the ETA weighs each by its parts' stored bytes.
+        var eta = new WorkWeightedEta(quiet || objectIds.Length < 2 ? [] : ChartWork.Of(dat.Portal, order, bareGfxObjs));
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || objectIds.Length < 2, "objects charted", "chart", eta.Remaining);
+        var charting = Stopwatch.StartNew();
         int charted = 0, mapsWritten = 0;
         long bytes = 0, probes = 0;
         var cheapest = new List<string>();
@@ -152,6 +155,7 @@ public static class ChartCommand
                         if (cheapest.Count < 20) cheapest.Add($"  {JsonIds.Format(chart.SetupId)}: cheapest exact model {(chart.CheapestExact.Length == 0 ? "none" : chart.CheapestExact)}");
                     }, progress: (done, total) =>
                     {
+                        eta.Record(done, charting.Elapsed);
                         progress.Report(new BatchProgress(done, total));
                         dat.RequireUnchanged();
                     }, jobs: jobs, cancellation: console.Interrupted);

@@ -22,12 +22,15 @@ public sealed class ProgressReporter
     private readonly string _label;
     private readonly Stopwatch _clock = Stopwatch.StartNew();
     private readonly Lock _lock = new();
+    private readonly Func<int, TimeSpan?>? _remaining;
     private TimeSpan _lastShown = TimeSpan.Zero;
     private bool _drawn;
 
     /// <param name="label">The command's name, which starts each plain progress line ("batch: …", "chart: …").</param>
-    public ProgressReporter(TextWriter error, bool isTerminal, bool quiet, string unit, string label)
+    /// <param name="remaining">The time left once so many are done (null: not known yet); by default, those left at the average rate so far.</param>
+    public ProgressReporter(TextWriter error, bool isTerminal, bool quiet, string unit, string label, Func<int, TimeSpan?>? remaining = null)
     {
+        _remaining = remaining;
         _label = label;
         _error = error;
         _terminal = isTerminal;
@@ -76,7 +79,7 @@ public sealed class ProgressReporter
     {
         var seconds = Math.Max(elapsed.TotalSeconds, 1e-3);
         var rate = p.Done / seconds;
-        var eta = rate > 0 ? TimeSpan.FromSeconds((p.Total - p.Done) / rate) : TimeSpan.Zero;
+        var eta = _remaining?.Invoke(p.Done) ?? (rate > 0 ? TimeSpan.FromSeconds((p.Total - p.Done) / rate) : TimeSpan.Zero);
         return string.Create(CultureInfo.InvariantCulture,
             $"{p.Done}/{p.Total} {_unit} ({100L * p.Done / p.Total}%), {rate:0.0}/s, ETA {(int)eta.TotalMinutes}:{eta.Seconds:00}");
     }

@@ -52,6 +52,8 @@ public sealed class DatDatabase : IDatSource, IDisposable
     public EnvCell? ReadEnvCell(uint id) => Decode(id, DatObjectKind.EnvCell, EnvCell.Read, c => c.Id);
     public CellEnvironment? ReadEnvironment(uint id) => Decode(id, DatObjectKind.Environment, CellEnvironment.Read, e => e.Id);
 
+    public long? StoredSize(uint id) => _archive.TryGetEntry(id, out var entry) ? entry.Size : null;
+
     public IReadOnlyList<uint> ListIds(DatObjectKind kind) =>
         _archive.Entries.Where(e => kind.Contains(e.Id)).Select(e => e.Id).ToArray();
 

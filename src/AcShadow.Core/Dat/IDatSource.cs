@@ -24,6 +24,12 @@ public interface IDatSource : IMotionSource
     CellEnvironment? ReadEnvironment(uint id) => null;
 
     IReadOnlyList<uint> ListIds(DatObjectKind kind);
+
+    /// <summary>
+    /// The bytes the dat's directory says an object takes (nothing is read or decoded); null when it is not
+    /// in the dat or the source cannot say. A damaged directory can claim any size.
+    /// </summary>
+    long? StoredSize(uint id) => null;
 }
 
 /// <summary>What identifies the dat a result came from (recorded in index.json).</summary>
