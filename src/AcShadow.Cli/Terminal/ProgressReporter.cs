@@ -27,7 +27,7 @@ public sealed class ProgressReporter
     private bool _drawn;
 
     /// <param name="label">The command's name, which starts each plain progress line ("batch: …", "chart: …").</param>
-    /// <param name="remaining">The time left once so many are done (null: not known yet); by default, those left at the average rate so far.</param>
+    /// <param name="remaining">The time left once so many are done (null: "not yet known"); by default, those left at the average rate so far.</param>
     public ProgressReporter(TextWriter error, bool isTerminal, bool quiet, string unit, string label, Func<int, TimeSpan?>? remaining = null)
     {
         _remaining = remaining;
@@ -79,8 +79,8 @@ public sealed class ProgressReporter
     {
         var seconds = Math.Max(elapsed.TotalSeconds, 1e-3);
         var rate = p.Done / seconds;
-        var eta = _remaining?.Invoke(p.Done) ?? (rate > 0 ? TimeSpan.FromSeconds((p.Total - p.Done) / rate) : TimeSpan.Zero);
+        TimeSpan? eta = _remaining is null ? (rate > 0 ? TimeSpan.FromSeconds((p.Total - p.Done) / rate) : TimeSpan.Zero) : _remaining(p.Done);
         return string.Create(CultureInfo.InvariantCulture,
-            $"{p.Done}/{p.Total} {_unit} ({100L * p.Done / p.Total}%), {rate:0.0}/s, ETA {(int)eta.TotalMinutes}:{eta.Seconds:00}");
+            $"{p.Done}/{p.Total} {_unit} ({100L * p.Done / p.Total}%), {rate:0.0}/s, ETA {(eta is { } e ? $"{(int)e.TotalMinutes}:{e.Seconds:00}" : "not yet known")}");
     }
 }

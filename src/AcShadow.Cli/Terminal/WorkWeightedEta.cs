@@ -16,6 +16,7 @@ public sealed class WorkWeightedEta
     // Running sums for the two-parameter fit of elapsed seconds t on (n, w).
     private double _nn, _nw, _ww, _tn, _tw;
     private int _samples;
+    private (int Done, double Seconds)? _origin;
 
     /// <param name="work">Each object's size estimate, in the order objects are reported done.</param>
     public WorkWeightedEta(IReadOnlyList<double> work)
@@ -28,15 +29,23 @@ public sealed class WorkWeightedEta
     public void Record(int done, TimeSpan elapsed)
     {
         if (done <= 0 || done >= _before.Length) return;
-        double n = done, w = _before[done], t = elapsed.TotalSeconds;
         lock (_lock)
         {
+            // Counted from the first report, so start-up and the first object's one-off warm-up (JIT, the
+            // timer's first long warm-up) are not taken for a cost every object pays.
+            if (_origin is not { } origin)
+            {
+                _origin = (done, elapsed.TotalSeconds);
+                return;
+            }
+            double n = done - origin.Done, w = _before[done] - _before[origin.Done], t = elapsed.TotalSeconds - origin.Seconds;
+            if (n <= 0) return;
             _nn += n * n; _nw += n * w; _ww += w * w; _tn += t * n; _tw += t * w;
             _samples++;
         }
     }
 
-    /// <summary>The time left once <paramref name="done"/> objects are done; null before anything was recorded.</summary>
+    /// <summary>The time left once <paramref name="done"/> objects are done; null until two reports have come.</summary>
     public TimeSpan? Remaining(int done)
     {
         done = Math.Clamp(done, 0, _before.Length - 1);

@@ -1,11 +1,13 @@
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
 
 namespace AcShadow.Core.Chart;
 
 /// <summary>
-/// A rough size for charting each object, read from the dat's directory without decoding anything: the
-/// stored bytes of the GfxObjs it is made of (vertices, polygons and BSP nodes are most of them, and they
-/// are what the grid, the stability probes and every model's answers grow with). Only for an ETA: objects
+/// A rough size for charting each object, read from the dat's directory without decoding any GfxObj: the
+/// stored bytes of the GfxObjs a Setup flagged HasPhysicsBSP is made of (vertices, polygons and BSP nodes
+/// are most of them, and they are what the grid, the stability probes and every model's answers grow
+/// with); 0 for other Setups, whose cost is the fixed one every object has. Only for an ETA: objects
 /// in a dat differ in size by a thousandfold and are not in size order, so counting objects misleads.
 /// </summary>
 public static class ChartWork
@@ -21,7 +23,9 @@ public static class ChartWork
         {
             try
             {
-                if (dat.ReadSetup(setupIds[i]) is { } setup)
+                // A Setup without the HasPhysicsBSP flag (creatures, items) has parts that carry drawing meshes
+                // only: their bytes say nothing of its chart, which costs what any object's does.
+                if (dat.ReadSetup(setupIds[i]) is { } setup && setup.Flags.HasFlag(SetupFlags.HasPhysicsBsp))
                     foreach (var part in setup.Parts) work[i] += Bytes(dat, part);
             }
             catch (DatFormatException)
