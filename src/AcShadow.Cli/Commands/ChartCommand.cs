@@ -117,9 +117,10 @@ public static class ChartCommand
         }
 
         var models = ShapeModels.All.Select(m => m.Name).ToArray();
-        // Objects differ in size a thousandfold and are not in size order: the ETA weighs each by its parts' stored bytes.
-        var eta = new WorkWeightedEta(quiet || objectIds.Length < 2 ? [] : ChartWork.Of(dat.Portal, order, bareGfxObjs));
-        var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet || objectIds.Length < 2, "objects charted", "chart", eta.Remaining);
+        // Objects are not in size order (on the scale dat the BSP-bearing half comes first by id): the ETA weighs each by its parts' stored bytes.
+        var silent = quiet || objectIds.Length < 2;
+        var eta = new WorkWeightedEta(silent ? [] : ChartWork.Of(dat.Portal, order, bareGfxObjs));
+        var progress = new ProgressReporter(console.Error, console.IsTerminal, silent, "objects charted", "chart", eta.Remaining);
         var charting = Stopwatch.StartNew();
         int charted = 0, mapsWritten = 0;
         long bytes = 0, probes = 0;
@@ -141,7 +142,7 @@ public static class ChartCommand
                     failureRows.Write(FailuresCsv.Header + "\n");
                     tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
                     {
-                        warnings.Add(JsonIds.Format(chart.SetupId), [.. chart.Models[0].Diagnostics.Select(d => $"{d.Code}: {d.Message}"), .. chart.Notes]);
+                        warnings.Add(JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics, chart.Notes);
                         chartRows.Write(ChartCsv.Rows(chart));
                         failureRows.Write(FailuresCsv.Rows(chart));
                         // The previous run's tables describe other maps: they go before the first map is
@@ -188,7 +189,7 @@ public static class ChartCommand
             {
                 console.Interrupted.ThrowIfCancellationRequested();
                 var cellChart = CellChart.Of(cell, structures, options, cellTimer);
-                warnings.Add(JsonIds.Format(cell.Id), [.. cellChart.Cell.Diagnostics.Select(d => $"{d.Code}: {d.Message}")]);
+                warnings.Add(JsonIds.Format(cell.Id), cellChart.Cell.Diagnostics);
                 cellCharts.Add(cellChart);
             }
             bytes += AtomicOutput.Write(outDir, CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));

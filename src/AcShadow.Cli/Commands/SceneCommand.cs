@@ -96,9 +96,9 @@ public static class SceneCommand
         }
         var warnings = new WarningSummary(console.Error);
         foreach (var (key, c) in report.Compiled)
-            warnings.Add(JsonIds.Format(key.Id), [.. c.Diagnostics.Select(d => $"{d.Code}: {d.Message}")]);
+            warnings.Add(JsonIds.Format(key.Id), c.Diagnostics);
         foreach (var cell in report.Cells)
-            warnings.Add(JsonIds.Format(cell.Cell.Id), [.. cell.Diagnostics.Select(d => $"{d.Code}: {d.Message}")]);
+            warnings.Add(JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
         ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));

@@ -1,4 +1,5 @@
 using System.Globalization;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Infrastructure;
 
@@ -14,11 +15,11 @@ public sealed class WarningSummary(TextWriter err)
     private readonly SortedDictionary<string, int> _byCode = new(StringComparer.Ordinal);
     private int _objects;
 
-    /// <summary>Objects with at least one warning.</summary>
-    public int Objects => _objects;
+    /// <summary>One object's diagnostics and notes (notes are already "code: message").</summary>
+    public void Add(string subject, IEnumerable<Diagnostic> diagnostics, IEnumerable<string>? notes = null) =>
+        Add(subject, [.. diagnostics.Select(d => $"{d.Code}: {d.Message}"), .. notes ?? []]);
 
-    /// <summary>One object's warnings, each "code: message".</summary>
-    public void Add(string subject, IReadOnlyCollection<string> warnings)
+    private void Add(string subject, IReadOnlyCollection<string> warnings)
     {
         if (warnings.Count == 0) return;
         lock (_byCode)

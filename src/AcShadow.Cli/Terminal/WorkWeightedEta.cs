@@ -5,7 +5,7 @@ namespace AcShadow.Cli.Terminal;
 /// objects are done is fitted as a·n + b·W(n), where W(n) is their summed size estimate (least squares over
 /// every report, a and b kept non-negative), and what is left is a·(objects left) + b·(size left).
 /// Counting objects alone misleads when big ones come first: on the scale dat, a third of the Setups by id
-/// hold two thirds of the polygons, and the count-based ETA said 47 minutes for a run of about 25.
+/// hold two thirds of the polygons, and the count-based ETA said 47 minutes for a run of 26.7.
 /// Until sizes and counts can be told apart it assumes an object's fixed cost equals an average object's
 /// size cost. Thread-safe.
 /// </summary>

@@ -7,8 +7,9 @@ namespace AcShadow.Core.Chart;
 /// A rough size for charting each object, read from the dat's directory without decoding any GfxObj: the
 /// stored bytes of the GfxObjs a Setup flagged HasPhysicsBSP is made of (vertices, polygons and BSP nodes
 /// are most of them, and they are what the grid, the stability probes and every model's answers grow
-/// with); 0 for other Setups, whose cost is the fixed one every object has. Only for an ETA: objects
-/// in a dat differ in size by a thousandfold and are not in size order, so counting objects misleads.
+/// with); 0 for other Setups, whose cost is the fixed one every object has. Only for an ETA: on the scale
+/// dat a Setup has from 0 to 7,844 physics polygons and the BSP-bearing half comes first by id, so
+/// counting objects misleads. Reading the 7,000 Setups for it took 65 ms.
 /// </summary>
 public static class ChartWork
 {
