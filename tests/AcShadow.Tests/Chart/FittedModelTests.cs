@@ -5,6 +5,9 @@ using AcShadow.Fixtures.Collision;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Core.Fitting;
+using AcShadow.Core.Poses;
+using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Forging;
 using AcShadow.Tests.Collision;
 using AcShadow.Tests.Support;
@@ -45,6 +48,23 @@ public class FittedModelTests
         Assert.All(ProbeKinds.Stability, kind => Assert.True(ChartProbes.Count(chart.Probes, kind) > 0, $"no {kind} probes"));
         var box = Assert.Single(PreparedBoxes(leaf));
         Assert.Equal(new Vector3(0.965f, 0.13f, 1.1f), box.HalfExtents);
+    }
+
+    [Theory]
+    [InlineData(DoorState.Closed)]
+    [InlineData(DoorState.Open)]
+    public void Fitted_parts_take_the_pose_and_door_state_the_retail_model_takes(DoorState state)
+    {
+        var pose = new ShapeBuildOptions(ShapePolicy.Retail) { DoorState = state };
+        var door = new ChartSubjects(SampleChart.Subjects.Value.Dat, pose).For(SampleChart.Door)!;
+        var retail = new RetailModel().Prepare(door).Shapes.Where(s => s.Bsp is not null).Select(s => (s.Name, s.Pose)).ToArray();
+        Assert.Equal(3, retail.Length);
+        foreach (var model in new IShapeModel[] { new PartBoxesModel(), new PartHullsModel() })
+            Assert.Equal(retail, model.Prepare(door).Shapes.Select(s => (s.Name, s.Pose)).ToArray());
+        // A solid that contains each correctly posed part can block more than retail, never less.
+        var chart = ChartOf(door);
+        Assert.Equal(0, Model(chart, "part-boxes").FalsePass);
+        Assert.Equal(0, Model(chart, "part-hulls").FalsePass);
     }
 
     private static IEnumerable<OrientedBox> PreparedBoxes(ChartSubject subject) =>

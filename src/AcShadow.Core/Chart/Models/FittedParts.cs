@@ -1,13 +1,13 @@
 using System.Numerics;
 using AcShadow.Fixtures.Collision;
-using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Chart.Models;
 
 /// <summary>
-/// What the fitted models share: every retail BSP part, posed as retail poses it (ShadowShapeBuilder,
-/// Retail policy, checked by <see cref="ObjectOverlapQuery"/>), replaced by a solid fitted to its physics
+/// What the fitted models share: every retail BSP part, posed exactly as the retail model poses it (the
+/// subject's pose and door state through <see cref="ChartSubject.Build"/>, so a fitted solid is never fitted
+/// to a part the reference has moved), replaced by a solid fitted to its physics
 /// vertices in part space and answered there (<see cref="PosedQuery"/>, so ε is in part units as for the
 /// BSP). A part that nothing can be fitted to is left out with a diagnostic; objects without BSP parts get
 /// nothing.
@@ -20,7 +20,7 @@ internal static class FittedParts
     public static PreparedModel Prepare(ChartSubject subject, string what,
         Func<IReadOnlyList<Vector3>, IReadOnlyList<Plane>, (ISphereOverlap Query, OrientedBox? Box, ConvexPolytope Polytope)?> fit)
     {
-        var set = ShadowShapeBuilder.Build(subject.Setup, subject.GfxObjs, new ShapeBuildOptions(ShapePolicy.Retail, subject.EntityScale));
+        var set = subject.Build(subject.Options(ShapePolicy.Retail));
         var parts = ObjectOverlapQuery.Create(set.Shapes.Where(s => s.CollisionType == CollisionType.Bsp), subject.Bsps);
         var queries = new List<ISphereOverlap>();
         var shapes = new List<PreparedShape>();
