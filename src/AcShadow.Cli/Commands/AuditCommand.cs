@@ -1,11 +1,11 @@
 using System.CommandLine;
 using System.Globalization;
 using System.Text;
+using AcShadow.Analysis.Audit;
+using AcShadow.Analysis.Chart;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
-using AcShadow.Core.Audit;
-using AcShadow.Core.Chart;
 
 namespace AcShadow.Cli.Commands;
 

@@ -2,13 +2,13 @@ using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.Text;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Chart.Output;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Models;
-using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Files;
@@ -183,7 +183,7 @@ public static class ChartCommand
         var cellCharts = new List<CellChart>(cells.Count);
         if (cells.Count > 0)
         {
-            var structures = new Core.Scenes.Compile.CellStructures(dat.Portal);
+            var structures = new Analysis.Compile.CellStructures(dat.Portal);
             var cellTimer = new StopwatchQueryTimer();
             foreach (var cell in cells)
             {

@@ -1,9 +1,9 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Reflection;
+using AcShadow.Analysis.Doctor;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
-using AcShadow.Core.Doctor;
 using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Cli.Commands;

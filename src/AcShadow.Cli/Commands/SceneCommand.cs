@@ -1,16 +1,16 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Compile;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
-using AcShadow.Fixtures.Bsp;
-using AcShadow.Core.Chart;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
-using AcShadow.Core.Scenes.Compile;
 
 namespace AcShadow.Cli.Commands;
 

@@ -2,23 +2,23 @@ using System.CommandLine;
 using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
+using AcShadow.Analysis.Compile;
+using AcShadow.Analysis.View;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
-using AcShadow.Core.Scenes.Compile;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
-using AcShadow.Core.View;
 using AcShadow.Files;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
-using AcShadow.Fixtures;
 
 namespace AcShadow.Cli.Commands;
 

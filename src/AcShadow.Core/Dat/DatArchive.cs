@@ -184,7 +184,7 @@ public sealed class DatArchive : IDisposable
     /// What reading damaged bytes can throw (bounds, overflow, end of stream, allocation, bad arguments);
     /// not cancellation, which is the caller's, nor thread aborts.
     /// </summary>
-    internal static bool IsReadFailure(Exception e) =>
+    public static bool IsReadFailure(Exception e) =>
         e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException);
 
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>

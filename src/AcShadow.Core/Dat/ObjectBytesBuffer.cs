@@ -6,7 +6,7 @@ namespace AcShadow.Core.Dat;
 /// the large ones, each a new array, were large-object-heap garbage that only gen2 collections free.
 /// Taken while in use, so a nested read gets a buffer of its own.
 /// </summary>
-internal static class ObjectBytesBuffer
+public static class ObjectBytesBuffer
 {
     /// <summary>A buffer grown past this by a huge object is let go rather than kept by the thread.</summary>
     private const int MaxKeptBytes = 4 << 20;

@@ -103,7 +103,7 @@ public static class BatchIndexWriter
         return inputs.Formats == OutputFormats.Canonical ? json : json.Add("formats", inputs.Formats.Name());
     }
 
-    internal static JsonObj Dat(DatSourceInfo info) => new JsonObj()
+    public static JsonObj Dat(DatSourceInfo info) => new JsonObj()
         .Add("fileName", info.FileName)
         .Add("size", info.Size)
         .Add("kind", info.Kind.ToString())

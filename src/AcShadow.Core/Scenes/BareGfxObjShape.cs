@@ -25,6 +25,6 @@ public static class BareGfxObjShape
             .Members.First(m => m.Key == "shapes").Value;
 
     /// <summary>The flag agrees with the part, so the builder reports no mismatch that the dat never stored.</summary>
-    internal static Setup OnePartSetup(GfxObj gfx) => new(
+    public static Setup OnePartSetup(GfxObj gfx) => new(
         gfx.Id, gfx.HasPhysics ? SetupFlags.HasPhysicsBsp : SetupFlags.None, [gfx.Id], [], [], [], [], [], 0f, 0f, 0f, 0f, default, default);
 }

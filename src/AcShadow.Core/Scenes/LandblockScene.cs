@@ -48,7 +48,7 @@ public sealed record LandblockScene(uint LandBlockInfoId, IReadOnlyList<SceneObj
     /// <summary>The distinct bare GfxObj ids placed, sorted.</summary>
     public IReadOnlyList<uint> GfxObjIds => Objects.Where(o => o.Kind == SceneObjectKind.GfxObj).Select(o => o.Id).Distinct().Order().ToArray();
 
-    internal static SceneObjectKind KindOf(uint id) =>
+    public static SceneObjectKind KindOf(uint id) =>
         DatObjectKind.Setup.Contains(id) ? SceneObjectKind.Setup
         : DatObjectKind.GfxObj.Contains(id) ? SceneObjectKind.GfxObj
         : SceneObjectKind.Other;

@@ -1,6 +1,6 @@
 using System.Numerics;
 using System.Text.Json;
-using AcShadow.Core.Audit;
+using AcShadow.Analysis.Audit;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat.Objects;

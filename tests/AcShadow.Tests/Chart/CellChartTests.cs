@@ -1,6 +1,6 @@
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Output;
-using AcShadow.Core.Scenes.Compile;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Output;
+using AcShadow.Analysis.Compile;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Tests.Scenes;
 

@@ -1,8 +1,8 @@
 using System.Numerics;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Output;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
@@ -140,7 +140,7 @@ public class ChartAtScaleTests
         Assert.Matches(@"the shapes span [^ ]+ × 2\.\d+E\+38 × [^ ]+ m$", warning);
         var map = Path.Combine(dir.Path, "failure-map-0x02000002.svg");
         var cells = System.Xml.Linq.XDocument.Load(map).Descendants().Count(e => e.Name.LocalName == "rect");
-        var models = Core.Chart.Models.ShapeModels.All.Count;
+        var models = Analysis.Chart.Models.ShapeModels.All.Count;
         Assert.InRange(cells, models, models * (FailureMapSvg.MaxCellsPerSide * FailureMapSvg.MaxCellsPerSide + 1) + 4);
         Assert.Contains("per cell (worst verdict shown", File.ReadAllText(map));
         // The fuzz campaign's bound for a whole case; before the map merged cells, this chart alone took 403 MiB.

@@ -1,7 +1,7 @@
 using System.Globalization;
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Models;
-using AcShadow.Core.Chart.Output;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Chart.Output;
 
 namespace AcShadow.Tests.Chart;
 

@@ -1,6 +1,6 @@
 using System.Text;
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Output;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Output;
 
 namespace AcShadow.Tests.Chart;
 
@@ -89,6 +89,6 @@ public class DoorChartTests
         Assert.Equal("retail", Door.CheapestExact);
         var chart = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "chart.csv").Content);
         Assert.Contains("0x020019FF,retail,3,", chart);
-        Assert.Equal(1 + AcShadow.Core.Chart.Models.ShapeModels.All.Count, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
+        Assert.Equal(1 + AcShadow.Analysis.Chart.Models.ShapeModels.All.Count, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
     }
 }

@@ -1,12 +1,12 @@
 using System.Numerics;
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Models;
-using AcShadow.Fixtures.Collision;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Fitting;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Fixtures.Geometry;
-using AcShadow.Core.Fitting;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Forging;
 using AcShadow.Tests.Collision;

@@ -1,5 +1,5 @@
-using AcShadow.Core.Chart;
-using AcShadow.Core.Chart.Models;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
 
 namespace AcShadow.Tests.Chart;
 

@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Chart;
+using AcShadow.Analysis.Chart;
 
 namespace AcShadow.Tests.Chart;
 

@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Chart;
+using AcShadow.Analysis.Chart;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Shapes;
 

@@ -1,4 +1,4 @@
-using AcShadow.Core.Chart;
+using AcShadow.Analysis.Chart;
 using AcShadow.Core.Dat;
 using AcShadow.Forging;
 

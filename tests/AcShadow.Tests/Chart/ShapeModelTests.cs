@@ -1,6 +1,6 @@
 using System.Numerics;
-using AcShadow.Core.Chart.Models;
-using AcShadow.Core.Chart;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;

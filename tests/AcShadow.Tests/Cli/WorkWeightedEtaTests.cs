@@ -1,5 +1,5 @@
+using AcShadow.Analysis.Chart;
 using AcShadow.Cli.Terminal;
-using AcShadow.Core.Chart;
 using AcShadow.Forging;
 
 namespace AcShadow.Tests.Cli;

@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Text.Json;
 using System.Text.RegularExpressions;
+using AcShadow.Analysis.Doctor;
 using AcShadow.Core.Dat;
-using AcShadow.Core.Doctor;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Tests.Support;
 

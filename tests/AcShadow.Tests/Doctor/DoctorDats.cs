@@ -1,6 +1,6 @@
+using AcShadow.Analysis.Doctor;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Doctor;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Doctor;

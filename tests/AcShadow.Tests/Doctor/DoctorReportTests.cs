@@ -1,10 +1,10 @@
 using System.Numerics;
+using AcShadow.Analysis.Doctor;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Doctor;
+using AcShadow.Fixtures.Bsp;
 using AcShadow.Forging;
 using AcShadow.Tests.Support;
-using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Tests.Doctor;
 

@@ -1,6 +1,6 @@
 using System.Globalization;
 using System.Numerics;
-using AcShadow.Core.Fitting;
+using AcShadow.Analysis.Fitting;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Fitting;

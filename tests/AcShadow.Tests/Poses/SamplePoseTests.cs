@@ -1,5 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Audit;
+using AcShadow.Analysis.Audit;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;

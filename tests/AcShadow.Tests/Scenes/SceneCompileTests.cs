@@ -1,12 +1,12 @@
 using System.Numerics;
 using System.Text.Json;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Compile;
 using AcShadow.Core.Batch;
-using AcShadow.Core.Chart;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Scenes;
-using AcShadow.Core.Scenes.Compile;
-using AcShadow.Forging;
 using AcShadow.Fixtures.Scenes;
+using AcShadow.Forging;
 using AcShadow.Tests.Chart;
 using AcShadow.Tests.Support;
 
@@ -194,7 +194,7 @@ public class SceneCompileTests
             // The premise of keeping a cell's tree: the cheapest solid that holds its walls, the convex hull of
             // its own vertices, fills the middle of the room, where retail lets a mover stand.
             var vertices = bsp.Polygons.SelectMany(p => p.Vertices).Distinct().ToArray();
-            var hull = AcShadow.Core.Fitting.ConvexHullBuilder.Build(vertices, bsp.Polygons.Select(p => new Plane(p.Normal, p.D)).ToArray());
+            var hull = AcShadow.Analysis.Fitting.ConvexHullBuilder.Build(vertices, bsp.Polygons.Select(p => new Plane(p.Normal, p.D)).ToArray());
             Assert.NotNull(hull);
             var middle = cell.Bounds.Center;
             var retail = new AcShadow.Fixtures.Collision.BspSphereQuery(bsp);

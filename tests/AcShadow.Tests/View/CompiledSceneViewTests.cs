@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Numerics;
+using AcShadow.Analysis.Compile;
+using AcShadow.Analysis.View;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Scenes.Compile;
-using AcShadow.Core.View;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;

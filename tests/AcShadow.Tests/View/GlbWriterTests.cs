@@ -2,7 +2,7 @@ using System.Buffers.Binary;
 using System.Globalization;
 using System.Numerics;
 using System.Text;
-using AcShadow.Core.View;
+using AcShadow.Analysis.View;
 using SharpGLTF.Schema2;
 using SharpGLTF.Validation;
 

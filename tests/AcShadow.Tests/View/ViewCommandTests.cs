@@ -1,16 +1,16 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.Numerics;
+using AcShadow.Analysis.View;
 using AcShadow.Core.Shapes;
-using AcShadow.Fixtures.Collision;
-using AcShadow.Fixtures.Shapes;
-using AcShadow.Core.View;
 using AcShadow.Fixtures;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Fixtures;
 using AcShadow.Tests.Support;
 using SharpGLTF.Schema2;
 using SharpGLTF.Validation;
-using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.View;
 

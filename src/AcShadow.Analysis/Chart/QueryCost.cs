@@ -1,0 +1,234 @@
+using System.Numerics;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
+using AcShadow.Fixtures.Shapes;
+
+namespace AcShadow.Analysis.Chart;
+
+/// <summary>
+/// What answering one query costs a model, counted, not timed: the same count on every machine and run,
+/// so a choice made by it is reproducible where a choice by wall time is not. The unit is one distance
+/// evaluation (a plane distance, dot + d, or a squared distance against a sphere: about 6 float
+/// operations). Weights from the float operations of each step:
+/// <list type="bullet">
+/// <item>moving the sphere into a part's, object's or cell's frame (<see cref="PartPose.ToLocal"/>, a
+/// quaternion turn of about 30 float operations): <see cref="Transform"/>;</item>
+/// <item>a Sphere: 1; a Cylinder: 2 (the disc, then the height);</item>
+/// <item>a part box (<see cref="BoxSphereQuery"/>): the turn, then 2 (the three slab excesses and the corner distance);</item>
+/// <item>a part hull (<see cref="ConvexPolytope"/>): the turn, its bounding sphere 1, each face plane it
+/// evaluates 1, and each face it then touch-tests 1 + its edges;</item>
+/// <item>a BSP part (<see cref="BspSphereQuery"/>): the turn, the root broad phase 1, each node visited 2
+/// (its sphere and its plane), each leaf sphere 1, each leaf polygon's plane 1 and, for a polygon the
+/// sphere reaches, its bounding sphere 1 and the edge walk 1 + its edges.</item>
+/// </list>
+/// An object's shapes are asked in order and the count stops at the first that blocks, as the query does.
+/// Counted over an evenly strided sample of the probes (the one the timer takes), averaged per query.
+/// </summary>
+public static class QueryCost
+{
+    public const int Transform = 5;
+
+    /// <summary>Average count per query over at most <paramref name="sample"/> evenly strided probes (0 for none).</summary>
+    public static double PerQuery(IReadOnlyList<PreparedShape> shapes, IReadOnlyList<Probe> probes, int sample)
+    {
+        if (probes.Count == 0 || sample < 1) return 0;
+        var counter = new Counter(shapes);
+        var n = Math.Min(sample, probes.Count);
+        long total = 0;
+        for (var i = 0; i < n; i++)
+        {
+            var p = probes[(int)((long)i * probes.Count / n)];
+            total += counter.Count(p.Center, p.Radius, out _);
+        }
+        return (double)total / n;
+    }
+
+    /// <summary>A model's shapes made ready to be counted, query after query.</summary>
+    public sealed class Counter(IReadOnlyList<PreparedShape> shapes)
+    {
+        private readonly Shape[] _shapes = [.. shapes.Select(Shape.Of)];
+
+        /// <summary>The count for one query, and whether the model blocks there.</summary>
+        public int Count(Vector3 center, float radius, out bool blocked)
+        {
+            blocked = false;
+            if (!Finite(center) || !float.IsFinite(radius) || radius < 0f) return 0;
+            var ops = 0;
+            foreach (var shape in _shapes)
+            {
+                ops += shape.Count(center, radius, out blocked);
+                if (blocked) return ops;
+            }
+            return ops;
+        }
+    }
+
+    private abstract class Shape
+    {
+        public abstract int Count(Vector3 center, float radius, out bool blocked);
+
+        public static Shape Of(PreparedShape s) => s switch
+        {
+            { Box: { } box } => new BoxShape(s.Pose, new BoxSphereQuery(box)),
+            { Polytope: { } hull } => new HullShape(s.Pose, hull),
+            { Bsp: { } bsp } => new BspShape(s.Pose, bsp),
+            _ when s.Shape.CollisionType == CollisionType.Cylinder => new CylinderShape(s.Shape),
+            _ => new SphereShape(s.Shape),
+        };
+    }
+
+    private sealed class SphereShape(ShadowShape s) : Shape
+    {
+        public override int Count(Vector3 center, float radius, out bool blocked)
+        {
+            blocked = SphereSphereTest.Touches(s.LocalPosition, s.Radius, center, radius);
+            return 1;
+        }
+    }
+
+    private sealed class CylinderShape(ShadowShape s) : Shape
+    {
+        public override int Count(Vector3 center, float radius, out bool blocked)
+        {
+            blocked = CylinderSphereTest.Touches(s.LocalPosition, s.Radius, s.CylHeight, center, radius);
+            return 2;
+        }
+    }
+
+    private sealed class BoxShape(PartPose pose, BoxSphereQuery box) : Shape
+    {
+        public override int Count(Vector3 center, float radius, out bool blocked)
+        {
+            var (local, r) = pose.ToLocal(center, radius);
+            blocked = box.Overlaps(local, r);
+            return Transform + 2;
+        }
+    }
+
+    private sealed class HullShape : Shape
+    {
+        private readonly PartPose _pose;
+        private readonly ConvexPolytope _hull;
+        private readonly IReadOnlyList<CompiledPolygon> _faces;
+        private readonly Vector3 _boundCenter;
+        private readonly float _boundRadius;
+
+        public HullShape(PartPose pose, ConvexPolytope hull)
+        {
+            _pose = pose;
+            _hull = hull;
+            _faces = hull.Faces;
+            (_boundCenter, _boundRadius) = BoundOf(hull.Vertices);
+        }
+
+        /// <summary>The walk <see cref="ConvexPolytope.Overlaps"/> takes, counted; its answer is the polytope's own.</summary>
+        public override int Count(Vector3 center, float radius, out bool blocked)
+        {
+            var (local, r) = _pose.ToLocal(center, radius);
+            blocked = _hull.Overlaps(local, r);
+            var ops = Transform + 1;
+            if (_faces.Count == 0 || DistanceSquared(local, _boundCenter) > (_boundRadius + r) * (_boundRadius + r)) return ops;
+            var reach = r - PhysicsEpsilon.Value;
+            var deepest = float.NegativeInfinity;
+            foreach (var face in _faces)
+            {
+                ops++;
+                var dist = face.Distance(local);
+                if (dist >= reach) return ops;
+                deepest = MathF.Max(deepest, dist);
+            }
+            if (deepest < 0f) return ops;
+            foreach (var face in _faces)
+            {
+                ops++;
+                if (face.Distance(local) < 0f) continue;
+                ops += 1 + face.Vertices.Length;
+                if (PolygonSphereTest.Touches(face, local, r)) return ops;
+            }
+            return ops;
+        }
+    }
+
+    private sealed class BspShape(PartPose pose, CompiledBsp bsp) : Shape
+    {
+        private readonly int[] _stack = new int[bsp.Nodes.Length * 2 + 2];
+
+        /// <summary>The walk <see cref="BspSphereQuery.Overlaps"/> takes (same pruning, same order), counted.</summary>
+        public override int Count(Vector3 center, float radius, out bool blocked)
+        {
+            blocked = false;
+            var (local, r) = pose.ToLocal(center, radius);
+            var nodes = bsp.Nodes;
+            var ops = Transform + 1;
+            if (nodes.Length == 0 || !Finite(local)) return ops;
+            var root = nodes[0];
+            if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
+            var reach = r - PhysicsEpsilon.Value;
+            var top = 0;
+            _stack[top++] = 1;
+            while (top > 0)
+            {
+                var entry = _stack[--top];
+                var node = nodes[entry >> 1];
+                var centreCheck = (entry & 1) != 0;
+                if (node.IsLeaf)
+                {
+                    if (node.ListedPolygonCount == 0) continue;
+                    if (centreCheck && node.Solid) { blocked = true; return ops; }
+                    ops++;
+                    if (!(DistanceSquared(node.SphereCenter, local) < (node.SphereRadius + r) * (node.SphereRadius + r))) continue;
+                    for (var k = 0; k < node.PolygonCount; k++)
+                    {
+                        var polygon = bsp.Polygons[bsp.LeafPolygons[node.PolygonStart + k]];
+                        ops++;
+                        if (MathF.Abs(polygon.Distance(local)) > reach) continue;
+                        ops += 2 + polygon.Vertices.Length;
+                        if (PolygonSphereTest.Touches(polygon, local, r)) { blocked = true; return ops; }
+                    }
+                    continue;
+                }
+                ops += 2;
+                if (!(DistanceSquared(node.SphereCenter, local) < (node.SphereRadius + r) * (node.SphereRadius + r))) continue;
+                var dist = PolygonPlane.Dot(node.Normal, local) + node.D;
+                if (dist >= reach) Push(ref top, node.Pos, centreCheck);
+                else if (dist <= -reach) Push(ref top, node.Neg, centreCheck);
+                else if (dist < 0f)
+                {
+                    Push(ref top, node.Pos, false);
+                    Push(ref top, node.Neg, centreCheck);
+                }
+                else
+                {
+                    Push(ref top, node.Pos, centreCheck);
+                    Push(ref top, node.Neg, false);
+                }
+            }
+            return ops;
+        }
+
+        private void Push(ref int top, int child, bool centreCheck)
+        {
+            if (child >= 0) _stack[top++] = child << 1 | (centreCheck ? 1 : 0);
+        }
+    }
+
+    private static (Vector3 Center, float Radius) BoundOf(IReadOnlyList<Vector3> vertices)
+    {
+        if (vertices.Count == 0) return (Vector3.Zero, 0f);
+        var min = new Vector3(float.PositiveInfinity);
+        var max = new Vector3(float.NegativeInfinity);
+        foreach (var v in vertices) { min = Vector3.Min(min, v); max = Vector3.Max(max, v); }
+        var center = new Vector3((min.X + max.X) * 0.5f, (min.Y + max.Y) * 0.5f, (min.Z + max.Z) * 0.5f);
+        var far = 0f;
+        foreach (var v in vertices) far = MathF.Max(far, DistanceSquared(v, center));
+        return (center, MathF.Sqrt(far) * 1.0001f + 1e-5f);
+    }
+
+    private static float DistanceSquared(Vector3 a, Vector3 b)
+    {
+        float dx = a.X - b.X, dy = a.Y - b.Y, dz = a.Z - b.Z;
+        return dx * dx + dy * dy + dz * dz;
+    }
+
+    private static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+}

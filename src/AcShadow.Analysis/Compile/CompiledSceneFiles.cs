@@ -1,0 +1,33 @@
+using System.Text;
+using AcShadow.Analysis.Chart.Output;
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Formats;
+using AcShadow.Core.Json;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Json;
+
+namespace AcShadow.Analysis.Compile;
+
+/// <summary>
+/// Every file `acshadow scene` writes, in a fixed order: compiled-scene.json, the BSP dumps of the
+/// GfxObjs objects still modelled by retail need (and no others), each indoor cell's PhysicsBSP dump
+/// (cells/0x%08X.bsp.json, in the cell's frame), scene-chart.csv, scene-chart.svg.
+/// </summary>
+public static class CompiledSceneFiles
+{
+    private const string ChartCsvPath = "scene-chart.csv";
+    private const string ChartSvgPath = "scene-chart.svg";
+
+    public static IReadOnlyList<ChartFile> Render(CompiledSceneReport report, Func<uint, BspDump?> dumps)
+    {
+        var files = new List<ChartFile> { new(FileFormats.CompiledScene.Path, CompiledSceneWriter.Write(report)) };
+        foreach (var id in CompiledSceneWriter.BspGfxObjs(report))
+            if (dumps(id) is { } dump) files.Add(new ChartFile(FileFormats.Bsp.PathFor(id), BspFileWriter.Write(dump)));
+        foreach (var cell in report.Cells)
+            if (cell.Bsp is not null) files.Add(new ChartFile(CompiledSceneWriter.CellBspPath(cell.Cell.Id), BspFileWriter.Write(cell.Physics!)));
+        files.Add(new ChartFile(ChartCsvPath, new UTF8Encoding(false).GetBytes(SceneChartCsv.Write(report))));
+        files.Add(new ChartFile(ChartSvgPath, new UTF8Encoding(false).GetBytes(SceneChartSvg.Write(report))));
+        return files;
+    }
+}

@@ -1,0 +1,241 @@
+using System.Numerics;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
+using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Json;
+using AcShadow.Core.Scenes;
+using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
+using AcShadow.Fixtures.Shapes;
+
+namespace AcShadow.Analysis.Compile;
+
+/// <summary>
+/// Compiles a landblock: every distinct placed object gets the first model of <see cref="ModelLadder"/>
+/// that qualifies (<see cref="SceneCompileOptions.Accepts"/>) on the chart's probes — grid, doorway lines
+/// and stability probes for every mover radius — then the chosen model and retail are timed with the
+/// chart's timer, and the whole scene is asked at every probe with every object as retail and as
+/// compiled (<see cref="SceneTotals"/>). Objects one after another, so answers are the same on every
+/// machine and timings do not disturb each other.
+/// </summary>
+public static class SceneCompiler
+{
+    public static CompiledSceneReport Compile(LandblockScene scene, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer, Action<int, int>? progress = null)
+    {
+        if (options.Problem() is { } problem) throw new ArgumentException(problem, nameof(options));
+        var placed = PlacedObject.Of(scene);
+        var distinct = placed.Select(p => (p.Object.Kind, p.Object.Id)).Distinct().ToArray();
+        var total = distinct.Length + scene.Cells.Count;
+        var compiled = new Dictionary<(SceneObjectKind, uint), ObjectCompilation>();
+        foreach (var key in distinct)
+        {
+            compiled[key] = CompileOne(key.Kind, key.Id, subjects, options, timer);
+            progress?.Invoke(compiled.Count, total);
+        }
+        var structures = new CellStructures(subjects.Dat);
+        var cells = new List<CellCompilation>(scene.Cells.Count);
+        foreach (var cell in scene.Cells)
+        {
+            cells.Add(CompileCell(cell, structures, options.Chart));
+            progress?.Invoke(compiled.Count + cells.Count, total);
+        }
+        var totals = Totals(placed, compiled, cells, options, timer);
+        return new CompiledSceneReport(options, scene, placed, compiled, cells, totals);
+    }
+
+    /// <summary>
+    /// One indoor cell: its structure's PhysicsBSP in the cell's frame, kept as retail
+    /// (<see cref="CellCompilation"/> says why), with the grid and stability probes the scene is checked at.
+    /// </summary>
+    public static CellCompilation CompileCell(EnvCell cell, CellStructures structures, ChartOptions chart)
+    {
+        var frame = new PartPose(cell.Position.Origin, Normalised(cell.Position.Orientation), 1f);
+        var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
+        if (geometry is null)
+            return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
+        var physics = geometry.Physics with { GfxObjId = cell.Id };
+        var diagnostics = physics.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToList();
+        if (!(float.IsFinite(cell.Position.Origin.X) && float.IsFinite(cell.Position.Origin.Y) && float.IsFinite(cell.Position.Origin.Z)) || !float.IsFinite(cell.Position.Orientation.Length()) || cell.Position.Orientation.Length() < 1e-6f)
+        {
+            diagnostics.Add(new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
+            return new CellCompilation(cell, physics, null, frame, [], Bounds.Empty, diagnostics);
+        }
+        var bsp = CompiledBsp.Compile(physics);
+        var bounds = bsp.Polygons.SelectMany(p => p.Vertices).Aggregate(Bounds.Empty, (b, v) => b.Include(v));
+        Probe[] probes = bsp.Polygons.Length == 0 ? []
+            : [.. ProbeGrid.Build(bounds, chart).Probes, .. StabilityProbes.Build(bsp, new PartPose(Vector3.Zero, Quaternion.Identity, 1f), chart)];
+        return new CellCompilation(cell, physics, bsp, frame, probes, bounds, diagnostics);
+    }
+
+    public static ObjectCompilation CompileOne(SceneObjectKind kind, uint id, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer)
+    {
+        ChartSubject? subject;
+        string? why;
+        try
+        {
+            (subject, why) = kind switch
+            {
+                SceneObjectKind.Setup => (subjects.For(id, options.EntityScale), "not in the dat"),
+                SceneObjectKind.GfxObj => (subjects.ForBareGfxObj(id, options.EntityScale), "not in the dat"),
+                _ => (null, $"neither a Setup ({DatObjectKind.Setup.RangeText()}) nor a GfxObj ({DatObjectKind.GfxObj.RangeText()})"),
+            };
+        }
+        catch (DatFormatException e)
+        {
+            (subject, why) = (null, $"unreadable: {e.Message}");
+        }
+        if (subject is null)
+            return Unresolved(kind, id, null, [new Diagnostic("unresolved", $"{JsonIds.Format(id)}: {why}")]);
+        return Compile(subject, kind, options, timer);
+    }
+
+    /// <summary>
+    /// One object: every model of the ladder counted on the probes (<see cref="QueryCost"/>), then tried
+    /// cheapest count first (ladder order among equal counts) until one qualifies; the chosen model and
+    /// retail timed. Retail always qualifies, so a model that counts more than retail is never tried.
+    /// </summary>
+    public static ObjectCompilation Compile(ChartSubject subject, SceneObjectKind kind, SceneCompileOptions options, IQueryTimer timer)
+    {
+        var chart = options.Chart;
+        var ladder = ModelLadder.Models;
+        var prepared = ladder.Select(m => ChartRunner.Prepare(m, subject)).ToArray();
+        var retailIndex = prepared.Length - 1;
+        var retail = prepared[retailIndex];
+        if (retail.Shapes.Count == 0)
+            return Unresolved(kind, subject.Setup.Id, ObjectCompilation.Nothing, retail.Diagnostics) with { Retail = retail };
+        var laid = ChartProbes.Lay(retail, prepared, chart);
+        var probes = laid.Probes;
+        var expected = ChartRunner.Answers(retail, probes);
+        var costs = prepared.Select(m => QueryCost.PerQuery(m.Shapes, probes, chart.TimingProbes)).ToArray();
+        var candidates = new List<CandidateOutcome>();
+        var chosen = retailIndex;
+        var chosenAnswers = expected;
+        foreach (var m in ModelLadder.ByCost(costs))
+        {
+            var answers = m == retailIndex ? expected : ChartRunner.Answers(prepared[m], probes);
+            int falsePass = 0, falseBlock = 0;
+            for (var i = 0; i < probes.Length; i++)
+            {
+                if (answers[i] == expected[i]) continue;
+                if (expected[i]) falsePass++; else falseBlock++;
+            }
+            // A model with no shapes for an object that has some is no model of it.
+            var accepted = prepared[m].Shapes.Count > 0 && options.Accepts(falsePass, falseBlock, probes.Length);
+            candidates.Add(new CandidateOutcome(ladder[m].Name, prepared[m].Shapes.Count, falsePass, falseBlock, accepted, costs[m]));
+            if (!accepted) continue;
+            chosen = m;
+            chosenAnswers = answers;
+            break;
+        }
+        var retailTiming = timer.Measure(ModelLadder.Retail, retail, probes, chart);
+        var chosenTiming = chosen == retailIndex ? retailTiming : timer.Measure(ladder[chosen].Name, prepared[chosen], probes, chart);
+        return new ObjectCompilation(subject.Setup.Id, kind, ladder[chosen].Name, prepared[chosen], retail, probes, expected, chosenAnswers,
+            candidates, chosenTiming, retailTiming, laid.Bounds, [.. retail.Diagnostics, .. chosen == retailIndex ? [] : prepared[chosen].Diagnostics])
+        {
+            ChosenOps = costs[chosen],
+            RetailOps = costs[retailIndex],
+        };
+    }
+
+    private static ObjectCompilation Unresolved(SceneObjectKind kind, uint id, string? model, IReadOnlyList<Diagnostic> diagnostics) =>
+        new(id, kind, model, null, null, [], [], [], [], TimingStats.Of([]), TimingStats.Of([]), Bounds.Empty, diagnostics);
+
+    /// <summary>
+    /// The scene asked as a whole at every placed object's and every cell's probes, all-retail against
+    /// compiled: agreement, counted operations per position (<see cref="SceneCost"/>), and time per
+    /// position, the two timed in the order retail, compiled, compiled, retail with their batches pooled,
+    /// so a machine that speeds up or slows down during the measurement weighs on both alike.
+    /// </summary>
+    private static SceneTotals Totals(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
+        IReadOnlyList<CellCompilation> cells, SceneCompileOptions options, IQueryTimer timer)
+    {
+        var retail = Query(placed, compiled, cells, c => c.Retail);
+        var chosen = Query(placed, compiled, cells, c => c.Chosen);
+        var positions = new List<Probe>();
+        foreach (var p in placed)
+        {
+            if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;
+            var frame = new PartPose(p.Object.Frame.Origin, Normalised(p.Object.Frame.Orientation), 1f);
+            foreach (var probe in c.Probes) positions.Add(probe with { Center = frame.ToEntity(probe.Center) });
+        }
+        foreach (var cell in cells)
+            foreach (var probe in cell.Probes) positions.Add(probe with { Center = cell.Frame.ToEntity(probe.Center) });
+        int agree = 0, falsePass = 0, falseBlock = 0;
+        foreach (var p in positions)
+        {
+            var expected = retail.Overlaps(p.Center, p.Radius);
+            var answer = chosen.Overlaps(p.Center, p.Radius);
+            if (expected == answer) agree++;
+            else if (expected) falsePass++;
+            else falseBlock++;
+        }
+        var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes);
+        var retailModel = new PreparedModel(retail, [], []);
+        var compiledModel = new PreparedModel(chosen, [], []);
+        const string RetailName = "scene: every object retail", CompiledName = "scene: compiled";
+        var r1 = timer.Measure(RetailName, retailModel, positions, options.Chart);
+        var c1 = timer.Measure(CompiledName, compiledModel, positions, options.Chart);
+        var c2 = timer.Measure(CompiledName, compiledModel, positions, options.Chart);
+        var r2 = timer.Measure(RetailName, retailModel, positions, options.Chart);
+        var retailTiming = TimingStats.Of([.. r1.BatchNs, .. r2.BatchNs]);
+        var compiledTiming = TimingStats.Of([.. c1.BatchNs, .. c2.BatchNs]);
+        var cellShapes = cells.Count(c => c.Bsp is not null);
+        int Shapes(Func<ObjectCompilation, PreparedModel?> pick) => cellShapes +
+            placed.Sum(p => compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is { } c && pick(c) is { } m ? m.Shapes.Count : 0);
+        return new SceneTotals(positions.Count, agree, falsePass, falseBlock, retailTiming, compiledTiming, Shapes(c => c.Retail), Shapes(c => c.Chosen))
+        {
+            RetailOps = retailOps,
+            CompiledOps = compiledOps,
+        };
+    }
+
+    /// <summary>
+    /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
+    /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
+    /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
+    /// </summary>
+    public static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
+    {
+        var objects = new List<PlacedQuery>();
+        foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
+            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Origin, p.Object.Frame.Orientation, model.Query, center, radius));
+        var cellQueries = cells.Where(c => c.Bsp is not null)
+            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Origin, c.Cell.Position.Orientation))).ToArray();
+        return new SceneQuery(objects, cellQueries);
+    }
+
+    /// <summary>The placed objects a scene asks, in order, each with the picked model and the entity-space sphere around its shapes.</summary>
+    internal static IEnumerable<(PlacedObject Placed, PreparedModel Model, Vector3 Center, float Radius)> Placements(IReadOnlyList<PlacedObject> placed,
+        IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled, Func<ObjectCompilation, PreparedModel?> pick)
+    {
+        foreach (var p in placed)
+        {
+            var o = p.Object;
+            if (compiled.GetValueOrDefault((o.Kind, o.Id)) is not { } c || pick(c) is not { } model || ShapeBounds.Of(model.Shapes) is var bounds && bounds.IsEmpty) continue;
+            var (center, radius) = Bound(bounds);
+            yield return (p, model, center, radius);
+        }
+    }
+
+    /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
+    public static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
+        Query(report.Placed, report.Compiled, report.Cells, pick);
+
+    /// <summary>The sphere around an entity-space box, padded so rounding never lets it reject a touching sphere.</summary>
+    public static (Vector3 Center, float Radius) Bound(Bounds b)
+    {
+        var half = b.Size * 0.5f;
+        return (b.Center, MathF.Sqrt(half.X * half.X + half.Y * half.Y + half.Z * half.Z) * 1.0001f + 1e-3f);
+    }
+
+    private static Quaternion Normalised(Quaternion q)
+    {
+        var length = MathF.Sqrt(q.X * q.X + q.Y * q.Y + q.Z * q.Z + q.W * q.W);
+        return length > 1e-6f && float.IsFinite(length) ? new Quaternion(q.X / length, q.Y / length, q.Z / length, q.W / length) : Quaternion.Identity;
+    }
+}

@@ -1,0 +1,28 @@
+using System.Numerics;
+using System.Text.Json;
+
+namespace AcShadow.Analysis.View;
+
+/// <summary>
+/// Each object's landblock-relative frame from a scene file (its <c>landblockFrame</c>), by object index. A
+/// view places objects relative to the landblock's corner: the world origin read back as float32 would cost
+/// millimetres at world coordinates of 30 km.
+/// </summary>
+public static class SceneFileFrames
+{
+    public static IReadOnlyDictionary<int, ViewFrame> Read(string sceneJson)
+    {
+        using var doc = JsonDocument.Parse(sceneJson);
+        var frames = new Dictionary<int, ViewFrame>();
+        foreach (var o in doc.RootElement.GetProperty("objects").EnumerateArray())
+        {
+            var frame = o.GetProperty("landblockFrame");
+            var origin = frame.GetProperty("origin");
+            var q = frame.GetProperty("orientation");
+            frames[o.GetProperty("index").GetInt32()] = new ViewFrame(
+                new Vector3(origin[0].GetSingle(), origin[1].GetSingle(), origin[2].GetSingle()),
+                new Quaternion(q.GetProperty("x").GetSingle(), q.GetProperty("y").GetSingle(), q.GetProperty("z").GetSingle(), q.GetProperty("w").GetSingle()));
+        }
+        return frames;
+    }
+}

@@ -1,0 +1,21 @@
+using AcShadow.Core.Bsp;
+using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Shapes;
+
+namespace AcShadow.Analysis.View;
+
+/// <summary>One shape model of an object: its name (a chart model's, e.g. "retail") and its shapes in the entity frame.</summary>
+public sealed record ModelShapes(string Model, IReadOnlyList<ShadowShape> Shapes);
+
+/// <summary>
+/// An object to view: its id, what it is ("Setup" or "GfxObj" for a bare GfxObj a landblock places), each
+/// model's shapes, the BSP dumps its BSP shapes name, and what building its shapes reported.
+/// </summary>
+public sealed record ViewSubject(uint Id, string Kind, IReadOnlyList<ModelShapes> Models, Func<uint, BspDump?> Bsps)
+{
+    public IReadOnlyList<Diagnostic> Diagnostics { get; init; } = [];
+}
+
+/// <summary>A subject placed in a landblock: its scene index and its frame relative to the landblock's corner.</summary>
+public sealed record ViewPlacement(int Index, ViewSubject Subject, ViewFrame Frame);

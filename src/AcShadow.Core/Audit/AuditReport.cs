@@ -1,7 +1,0 @@
-using AcShadow.Core.Batch;
-
-namespace AcShadow.Core.Audit;
-
-/// <summary>An audit's result: the rows shown (filtered and sorted), how many were audited, the skipped ids, the summary, the columns to write.</summary>
-public sealed record AuditReport(IReadOnlyList<AuditRow> Rows, int Audited, IReadOnlyList<SkippedItem> Skipped, AuditSummary Summary,
-    IReadOnlyList<AuditColumn> Columns);

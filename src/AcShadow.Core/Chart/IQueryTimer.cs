@@ -1,9 +1,0 @@
-using AcShadow.Core.Chart.Models;
-
-namespace AcShadow.Core.Chart;
-
-/// <summary>Measures a prepared model's time per query over probes. Swappable so tests get fixed numbers.</summary>
-public interface IQueryTimer
-{
-    TimingStats Measure(string modelName, PreparedModel model, IReadOnlyList<Probe> probes, ChartOptions options);
-}
