@@ -3,6 +3,7 @@ using AcShadow.Cli.Commands;
 using AcShadow.Cli.Conventions;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 
 namespace AcShadow.Cli;
 

@@ -1,4 +1,5 @@
 using AcShadow.Core.Batch;
+using AcShadow.Core.Export;
 
 namespace AcShadow.Analysis.Audit;
 

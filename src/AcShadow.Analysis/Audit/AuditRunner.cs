@@ -2,7 +2,9 @@ using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Export;
 
 namespace AcShadow.Analysis.Audit;
 

@@ -2,6 +2,7 @@ using System.Text;
 using AcShadow.Analysis.Reports;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Formats;

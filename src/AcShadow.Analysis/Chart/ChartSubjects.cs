@@ -1,5 +1,7 @@
+using AcShadow.Analysis.Chart.Models;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;

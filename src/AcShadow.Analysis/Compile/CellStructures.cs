@@ -1,5 +1,6 @@
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Analysis.Compile;

@@ -2,6 +2,7 @@ using System.Numerics;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;

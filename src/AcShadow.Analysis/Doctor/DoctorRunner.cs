@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 
 namespace AcShadow.Analysis.Doctor;

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
@@ -15,7 +16,7 @@ namespace AcShadow.Analysis.Doctor;
 /// </summary>
 internal static class MotionPoseInspection
 {
-    private static readonly ShapeBuildOptions RetailPose = new(ShapePolicy.Retail);
+    private static readonly PoseSettings RetailPose = new ShapeBuildOptions(ShapePolicy.Retail).PoseSettings;
 
     private static readonly HashSet<string> FallBacks = new(StringComparer.Ordinal)
     {

@@ -1,6 +1,7 @@
 using System.Text.Json;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Core.Bsp;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
 using AcShadow.Core.Poses;

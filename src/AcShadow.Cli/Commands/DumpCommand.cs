@@ -6,6 +6,7 @@ using AcShadow.Core.Batch;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 
 namespace AcShadow.Cli.Commands;
 

@@ -9,6 +9,7 @@ using AcShadow.Cli.Output;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;

@@ -1,5 +1,6 @@
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;

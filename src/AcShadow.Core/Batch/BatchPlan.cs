@@ -1,3 +1,4 @@
+using AcShadow.Core.Export;
 using AcShadow.Core.Scenes;
 
 namespace AcShadow.Core.Batch;

@@ -1,4 +1,6 @@
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Export;
 using AcShadow.Core.Scenes;
 
 namespace AcShadow.Core.Batch;

@@ -1,4 +1,5 @@
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Fixtures.Formats;
 
 namespace AcShadow.Core.Batch;

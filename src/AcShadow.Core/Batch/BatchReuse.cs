@@ -1,9 +1,10 @@
 using System.Buffers.Binary;
+using System.Collections.Concurrent;
 using System.Security.Cryptography;
 using System.Text;
-using System.Collections.Concurrent;
-using AcShadow.Core.Export;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 
 namespace AcShadow.Core.Batch;
 

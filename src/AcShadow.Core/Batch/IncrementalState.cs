@@ -1,6 +1,7 @@
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Batch;
 

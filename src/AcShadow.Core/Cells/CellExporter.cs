@@ -1,6 +1,7 @@
 using AcShadow.Core.Batch;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;

@@ -1,6 +1,7 @@
 using System.Buffers;
 using System.Buffers.Binary;
 using System.Collections.Concurrent;
+using AcShadow.Core.Dat.Binary;
 using Microsoft.Win32.SafeHandles;
 
 namespace AcShadow.Core.Dat;

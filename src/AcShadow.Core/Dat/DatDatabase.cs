@@ -1,4 +1,5 @@
 using System.Collections.Concurrent;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 
 namespace AcShadow.Core.Dat;

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 namespace AcShadow.Core.Dat;
 
 /// <summary>One 24-byte B-tree entry: where an object's block chain starts and how long it is.</summary>

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 
 namespace AcShadow.Core.Dat;

@@ -1,3 +1,4 @@
+using AcShadow.Core.Formats;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 

@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 

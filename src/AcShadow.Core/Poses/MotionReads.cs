@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 
 namespace AcShadow.Core.Poses;

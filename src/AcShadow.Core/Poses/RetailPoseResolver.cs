@@ -1,7 +1,7 @@
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Poses;
@@ -25,9 +25,9 @@ namespace AcShadow.Core.Poses;
 /// </summary>
 public static class RetailPoseResolver
 {
-    public static ResolvedPose Resolve(Setup setup, ShapeBuildOptions options, IMotionSource? motions, List<Diagnostic> diagnostics)
+    public static ResolvedPose Resolve(Setup setup, PoseSettings options, IMotionSource? motions, List<Diagnostic> diagnostics)
     {
-        var placement = PlacementResolver.Choose(setup, options.Policy);
+        var placement = PlacementResolver.Choose(setup, options.Placement);
         if (options.Pose == PosePolicy.Placement) return new(placement, null, PoseProvenance.Placement(PosePolicy.Placement.Name()));
         var walk = new Walk(setup, motions, diagnostics);
         return walk.Run(options, placement);
@@ -41,7 +41,7 @@ public static class RetailPoseResolver
         private uint? _tableId, _style, _substate, _animationId;
         private string? _from;
 
-        public ResolvedPose Run(ShapeBuildOptions options, PlacementFrame? placement)
+        public ResolvedPose Run(PoseSettings options, PlacementFrame? placement)
         {
             if (setup.DefaultAnimation != 0 && Start(new AnimData(setup.DefaultAnimation, 0, -1, 30f), $"DefaultAnimation 0x{setup.DefaultAnimation:X8}") is { } first)
                 SetCurrent(first, PoseProvenance.DefaultAnimationSource, null, null, null, null, setup.DefaultAnimation);

@@ -1,5 +1,6 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 
 namespace AcShadow.Core.Scenes;
 

@@ -1,6 +1,7 @@
 using AcShadow.Core.Batch;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
@@ -24,7 +25,7 @@ public static class SceneExporter
     /// <param name="setupProblems">Why a placed Setup has no export (not in the dat, unreadable).</param>
     /// <param name="cells">The cell files written for the scene's cells (listed in scene.json's "cells").</param>
     public static SceneExport Export(LandblockScene scene, ExportEngine engine,
-        IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems, IReadOnlyList<Cells.CellExport>? cells = null)
+        IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems, IReadOnlyList<CellExport>? cells = null)
     {
         var bspFiles = new SortedDictionary<string, BspDumpResult>(StringComparer.Ordinal);
         var skipped = new Dictionary<uint, SkippedItem>();
@@ -60,7 +61,7 @@ public static class SceneExporter
     }
 
     /// <summary>Every cell the landblock counts, in id order: its file, or why it has none.</summary>
-    private static IEnumerable<JsonObj> CellEntries(LandblockScene scene, IReadOnlyList<Cells.CellExport> cells)
+    private static IEnumerable<JsonObj> CellEntries(LandblockScene scene, IReadOnlyList<CellExport> cells)
     {
         var entries = cells.Select(c => (c.CellId, Json: new JsonObj()
                 .Add("id", JsonIds.Format(c.CellId))

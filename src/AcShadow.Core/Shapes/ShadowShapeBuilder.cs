@@ -1,6 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
@@ -19,7 +20,7 @@ public static class ShadowShapeBuilder
     {
         var diagnostics = new List<Diagnostic>();
         var scale = options.EntityScale;
-        var pose = RetailPoseResolver.Resolve(setup, options, motions, diagnostics);
+        var pose = RetailPoseResolver.Resolve(setup, options.PoseSettings, motions, diagnostics);
         var placementFrame = pose.Placement;
         var placement = PlacementResolver.Describe(placementFrame);
         var provenance = pose.MotionFrames is null ? pose.Provenance : pose.Provenance with { DiffersFromPlacement = ReportMoves(setup, pose, diagnostics) };

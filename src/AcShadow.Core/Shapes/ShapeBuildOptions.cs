@@ -13,4 +13,7 @@ public sealed record ShapeBuildOptions(ShapePolicy Policy, float EntityScale = 1
     public PosePolicy Pose { get; init; } = PosePolicy.Retail;
     public DoorState DoorState { get; init; } = DoorState.Closed;
     public uint? MotionTable { get; init; }
+
+    /// <summary>The options the pose is resolved under.</summary>
+    public PoseSettings PoseSettings => new(Policy, Pose, DoorState, MotionTable);
 }

@@ -1,6 +1,7 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Export;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Batch;

@@ -1,13 +1,14 @@
 using System.Numerics;
-using System.Text.Json.Serialization;
 using System.Text.Json;
+using System.Text.Json.Serialization;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Formats;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Cells;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Scenes;
-using AcShadow.Fixtures;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Cells;

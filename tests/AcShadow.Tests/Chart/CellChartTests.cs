@@ -1,4 +1,5 @@
 using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Cells;
 using AcShadow.Analysis.Chart.Output;
 using AcShadow.Analysis.Compile;
 using AcShadow.Fixtures.Collision;

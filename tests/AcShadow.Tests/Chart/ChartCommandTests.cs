@@ -1,3 +1,4 @@
+using AcShadow.Analysis.Chart.Cells;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Chart;
@@ -49,8 +50,8 @@ public class ChartCommandTests
         var run = CliRun.Of("chart", "--landblock", "0xA9B4", "--spacing", "1", "--out", dir.Path, "--quiet");
         Assert.True(run.ExitCode == 0, run.Error);
         Assert.Contains("2 indoor cell(s) probed as retail", run.Out);
-        var rows = File.ReadAllLines(Path.Combine(dir.Path, AcShadow.Analysis.Chart.Output.CellsCsv.FileName));
-        Assert.Equal(AcShadow.Analysis.Chart.Output.CellsCsv.Header, rows[0]);
+        var rows = File.ReadAllLines(Path.Combine(dir.Path, AcShadow.Analysis.Chart.Cells.CellsCsv.FileName));
+        Assert.Equal(AcShadow.Analysis.Chart.Cells.CellsCsv.Header, rows[0]);
         var header = rows[0].Split(',');
         int Column(string name) => Array.IndexOf(header, name);
         Assert.Equal(["0xA9B40100", "0xA9B40101"], rows.Skip(1).Select(r => r.Split(',')[0]));
@@ -67,7 +68,7 @@ public class ChartCommandTests
         using var objectsOnly = new TempDir();
         run = CliRun.Of("chart", "--landblock", "0xA9B4", "--no-cells", "--spacing", "1", "--out", objectsOnly.Path, "--quiet");
         Assert.True(run.ExitCode == 0, run.Error);
-        Assert.DoesNotContain(AcShadow.Analysis.Chart.Output.CellsCsv.FileName, objectsOnly.Files());
+        Assert.DoesNotContain(AcShadow.Analysis.Chart.Cells.CellsCsv.FileName, objectsOnly.Files());
         Assert.DoesNotContain("indoor cell", run.Out);
     }
 

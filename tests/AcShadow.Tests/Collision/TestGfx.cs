@@ -1,7 +1,8 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Tests.Collision;

@@ -1,6 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Tests.Dat;

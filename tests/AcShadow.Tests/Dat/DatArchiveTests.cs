@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 
 namespace AcShadow.Tests.Dat;
 

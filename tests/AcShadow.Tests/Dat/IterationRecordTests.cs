@@ -1,5 +1,6 @@
 using System.Text.Json;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Forging;
 using AcShadow.Tests.Support;

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 
 namespace AcShadow.Tests.Dat;

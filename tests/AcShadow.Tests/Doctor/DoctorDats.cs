@@ -1,5 +1,6 @@
 using AcShadow.Analysis.Doctor;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Tests.Support;
 

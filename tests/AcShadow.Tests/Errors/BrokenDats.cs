@@ -1,6 +1,7 @@
 using System.Numerics;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Tests.Support;

@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Forging;

@@ -1,14 +1,15 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Geometry;
+using AcShadow.Forge.Scale;
+using AcShadow.Forging;
 using AcShadow.Forging.Bsp;
 using AcShadow.Forging.Geometry;
 using AcShadow.Forging.Spec;
-using AcShadow.Forge.Scale;
-using AcShadow.Forging;
 
 namespace AcShadow.Tests.Forge;
 
@@ -40,8 +41,8 @@ public sealed class PhysicsBspBuilderTests
     public void Building_is_deterministic()
     {
         var (vertices, polygons) = Mesh(new MeshBuilder().Box(new(0, 0, 0), new(3, 2, 1), 3, 2, 1).Prism(new(5, 0, 0), 1, 2, 12, 3));
-        var a = new Core.Dat.DatBinaryWriter();
-        var b = new Core.Dat.DatBinaryWriter();
+        var a = new Core.Dat.Binary.DatBinaryWriter();
+        var b = new Core.Dat.Binary.DatBinaryWriter();
         PhysicsBspBuilder.Build(vertices, polygons).Write(a);
         PhysicsBspBuilder.Build(vertices, polygons).Write(b);
         Assert.Equal(a.ToArray(), b.ToArray());

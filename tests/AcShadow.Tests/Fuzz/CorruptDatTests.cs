@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Tests.Support;
 
 namespace AcShadow.Tests.Fuzz;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
@@ -29,7 +30,7 @@ public class RetailPoseResolverTests
     private static (ResolvedPose Pose, List<Diagnostic> Diagnostics) Resolve(Setup setup, IMotionSource motions)
     {
         var diagnostics = new List<Diagnostic>();
-        return (RetailPoseResolver.Resolve(setup, new ShapeBuildOptions(ShapePolicy.Retail), motions, diagnostics), diagnostics);
+        return (RetailPoseResolver.Resolve(setup, new ShapeBuildOptions(ShapePolicy.Retail).PoseSettings, motions, diagnostics), diagnostics);
     }
 
     [Theory]

@@ -1,9 +1,10 @@
 using System.Numerics;
 using System.Text.Json;
-using AcShadow.Fixtures.Shapes;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Scenes;
+using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
 using static AcShadow.Tests.Batch.BatchRuns;
 

@@ -1,4 +1,5 @@
 using System.Text;
+using AcShadow.Analysis.Chart.Cells;
 
 namespace AcShadow.Analysis.Chart.Output;
 

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>

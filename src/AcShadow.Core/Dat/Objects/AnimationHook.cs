@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Numerics;
+using AcShadow.Core.Dat.Binary;
 
 namespace AcShadow.Core.Dat.Objects;
 

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>A building a LandBlockInfo places: its model (Setup or GfxObj), frame and portals.</summary>

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 namespace AcShadow.Core.Dat.Objects;
 
 public sealed record BuildingPortal(ushort Flags, ushort OtherCellId, ushort OtherPortalId, IReadOnlyList<ushort> StabList)

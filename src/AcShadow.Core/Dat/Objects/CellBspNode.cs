@@ -1,5 +1,6 @@
-using AcShadow.Fixtures.Bsp;
 using System.Numerics;
+using AcShadow.Core.Dat.Binary;
+using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Core.Dat.Objects;
 

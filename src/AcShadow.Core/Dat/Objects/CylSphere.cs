@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Core.Dat.Binary;
 
 namespace AcShadow.Core.Dat.Objects;
 

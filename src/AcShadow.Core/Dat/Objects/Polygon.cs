@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Fixtures.Bsp;
 
 namespace AcShadow.Core.Dat.Objects;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Core.Dat.Binary;
 using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat.Objects;

@@ -1,3 +1,4 @@
+using AcShadow.Core.Dat.Binary;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>A static object a LandBlockInfo places: a Setup or GfxObj id and its landblock frame.</summary>

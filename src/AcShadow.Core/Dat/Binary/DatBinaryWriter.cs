@@ -1,7 +1,7 @@
 using System.Buffers.Binary;
 using System.Numerics;
 
-namespace AcShadow.Core.Dat;
+namespace AcShadow.Core.Dat.Binary;
 
 /// <summary>Little-endian writer that mirrors <see cref="DatBinaryReader"/> field for field.</summary>
 public sealed class DatBinaryWriter

@@ -1,7 +1,7 @@
 using System.Security.Cryptography;
 using AcShadow.Fixtures.Batch;
 
-namespace AcShadow.Core.Export;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
 /// What index.json lists about one written file: enough to describe it (and to find it unchanged on

@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Export;
+namespace AcShadow.Core.Formats;
 
 /// <summary>Which file shapes a run writes (`--format canonical|acdream|both`).</summary>
 [Flags]

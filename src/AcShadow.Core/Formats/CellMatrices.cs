@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
 
-namespace AcShadow.Core.Cells;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
 /// A cell frame as 4×4 matrices in System.Numerics' convention, the one acdream's cell fixtures use

@@ -1,6 +1,7 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
@@ -9,7 +10,7 @@ using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Formats;
+namespace AcShadow.Core.Batch;
 
 /// <summary>
 /// Writes index.json: the run's inputs (enough for verify to regenerate), a summary, what was skipped,

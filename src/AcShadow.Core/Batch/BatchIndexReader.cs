@@ -2,6 +2,7 @@ using System.Text.Json;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
@@ -11,7 +12,7 @@ using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
 using static AcShadow.Fixtures.Json.JsonPathFields;
 
-namespace AcShadow.Core.Formats;
+namespace AcShadow.Core.Batch;
 
 /// <summary>
 /// Reads index.json back with everything verify needs to regenerate it: the fixtures library's parser of the

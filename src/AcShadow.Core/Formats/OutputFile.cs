@@ -1,6 +1,6 @@
 using AcShadow.Fixtures.Batch;
 
-namespace AcShadow.Core.Export;
+namespace AcShadow.Core.Formats;
 
 /// <summary>
 /// One file of an export, in memory: where it goes (relative, '/' separated), what it is, its bytes. A file

@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Batch;
+namespace AcShadow.Core.Export;
 
 /// <summary>Which part of a selection asked for a Setup (an id can come from several).</summary>
 [Flags]

@@ -1,10 +1,11 @@
+using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Analysis.Chart;
+namespace AcShadow.Analysis.Chart.Models;
 
 /// <summary>
 /// One object to chart: its Setup, how to find its GfxObjs and their compiled PhysicsBSPs, its scale, and

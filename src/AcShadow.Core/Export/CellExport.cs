@@ -1,8 +1,9 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
+using AcShadow.Core.Formats;
 using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Cells;
+namespace AcShadow.Core.Export;
 
 /// <summary>
 /// One EnvCell's export: its cell file (null when its Environment or cell structure is missing), the BSP

@@ -2,7 +2,7 @@ using System.Buffers.Binary;
 using System.Numerics;
 using System.Runtime.InteropServices;
 
-namespace AcShadow.Core.Dat;
+namespace AcShadow.Core.Dat.Binary;
 
 /// <summary>
 /// Little-endian reader over one object's bytes (block chain already followed).

@@ -1,7 +1,7 @@
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Shapes;
 
-namespace AcShadow.Core.Shapes;
+namespace AcShadow.Core.Poses;
 
 /// <summary>
 /// Chooses the placement frame the parts are posed by.

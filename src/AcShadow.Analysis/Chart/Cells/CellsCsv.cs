@@ -1,7 +1,7 @@
 using System.Text;
 using static AcShadow.Analysis.Chart.Output.ChartFormat;
 
-namespace AcShadow.Analysis.Chart.Output;
+namespace AcShadow.Analysis.Chart.Cells;
 
 /// <summary>
 /// cells.csv: one row per indoor cell a landblock chart probed, in cell id order: its structure, its

@@ -1,4 +1,4 @@
-namespace AcShadow.Core.Dat;
+namespace AcShadow.Core.Dat.Binary;
 
 /// <summary>
 /// The bytes of a dat file (or of one object in it) do not follow the documented layout. When one object

@@ -1,6 +1,6 @@
 using AcShadow.Core.Dat.Objects;
 
-namespace AcShadow.Core.Poses;
+namespace AcShadow.Core.Dat;
 
 /// <summary>Where the motion pose reads motion tables and animations (a dat; null for an absent id).</summary>
 public interface IMotionSource

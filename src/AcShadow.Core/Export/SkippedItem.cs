@@ -1,7 +1,7 @@
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
 
-namespace AcShadow.Core.Batch;
+namespace AcShadow.Core.Export;
 
 /// <summary>An id the selection asked for that the run could not export, and why. Reported, never fatal.</summary>
 public sealed record SkippedItem(uint Id, string Reason, SelectionSource From)

@@ -3,7 +3,7 @@ using AcShadow.Analysis.Compile;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Collision;
 
-namespace AcShadow.Analysis.Chart;
+namespace AcShadow.Analysis.Chart.Cells;
 
 /// <summary>
 /// One indoor cell of a landblock charted: the probes `acshadow scene` lays around it

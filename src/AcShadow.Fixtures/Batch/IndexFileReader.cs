@@ -1,9 +1,8 @@
 using System.Text.Json;
-using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Shapes;
 using static AcShadow.Fixtures.Json.JsonPathFields;
 
-namespace AcShadow.Fixtures.Formats;
+namespace AcShadow.Fixtures.Batch;
 
 /// <summary>
 /// The one parser of index.json's body (its format checked by the caller): the policy and entity scale the
