@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
+using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;

@@ -10,6 +10,7 @@ using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
+using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Json;
@@ -185,7 +186,7 @@ public static class ChartCommand
         var cellCharts = new List<CellChart>(cells.Count);
         if (cells.Count > 0)
         {
-            var structures = new Analysis.Compile.CellStructures(dat.Portal);
+            var structures = new CellStructures(dat.Portal);
             var cellTimer = new StopwatchQueryTimer();
             foreach (var cell in cells)
             {

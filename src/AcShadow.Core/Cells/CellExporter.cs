@@ -1,6 +1,5 @@
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
-using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
@@ -24,16 +23,14 @@ namespace AcShadow.Core.Cells;
 /// </summary>
 public sealed class CellExporter(ExportEngine engine)
 {
-    private readonly Dictionary<(uint, uint), CellGeometry?> _geometry = [];
-    private readonly Dictionary<(uint, uint), string> _problems = [];
-    private readonly Lock _lock = new();
+    private readonly CellStructures _structures = new(engine.Dat);
 
     /// <param name="setupFiles">The shadow file of every Setup the run exported.</param>
     /// <param name="setupProblems">Why a placed Setup has no export.</param>
     public CellExport Export(EnvCell cell, LandblockScene scene, IReadOnlyDictionary<uint, string> setupFiles, IReadOnlyDictionary<uint, string> setupProblems)
     {
         var diagnostics = new List<Diagnostic>();
-        var (geometry, problem) = Geometry(cell.EnvironmentFileId, cell.CellStructure);
+        var (geometry, problem) = _structures.For(cell.EnvironmentFileId, cell.CellStructure);
         if (geometry is null)
         {
             var reason = $"EnvCell {JsonIds.Format(cell.Id)}: {problem}";
@@ -101,30 +98,5 @@ public sealed class CellExporter(ExportEngine engine)
         };
         return new CellExport(cell.Id, file, bspFiles.Values.Where(d => d.File is not null).Select(d => d.File!).ToArray(),
             bspFiles.Values.SelectMany(d => d.Entries).ToArray(), skipped.Values.OrderBy(s => s.Id).ToArray(), diagnostics, cell.StaticObjects.Count);
-    }
-
-    /// <summary>The cell structure's geometry, built on first use; or why there is none.</summary>
-    private (CellGeometry? Geometry, string? Problem) Geometry(uint environmentId, uint index)
-    {
-        lock (_lock)
-        {
-            if (_geometry.TryGetValue((environmentId, index), out var known)) return (known, _problems.GetValueOrDefault((environmentId, index)));
-            CellGeometry? geometry = null;
-            string? problem = null;
-            try
-            {
-                var environment = engine.Dat.ReadEnvironment(environmentId);
-                if (environment is null) problem = $"Environment {JsonIds.Format(environmentId)}: {SkippedItem.NotInDat}";
-                else if (environment.Cell(index) is not { } shape) problem = $"Environment {JsonIds.Format(environmentId)} has no cell structure {index}";
-                else geometry = CellGeometry.Of(environment, index, shape);
-            }
-            catch (DatFormatException e)
-            {
-                problem = $"Environment {JsonIds.Format(environmentId)} unreadable: {e.Message}";
-            }
-            _geometry[(environmentId, index)] = geometry;
-            if (problem is not null) _problems[(environmentId, index)] = problem;
-            return (geometry, problem);
-        }
     }
 }

@@ -2,6 +2,7 @@ using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Cells;
 using AcShadow.Analysis.Chart.Output;
 using AcShadow.Analysis.Compile;
+using AcShadow.Core.Cells;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Tests.Scenes;
 

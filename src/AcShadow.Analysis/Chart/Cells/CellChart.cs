@@ -1,5 +1,6 @@
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Analysis.Compile;
+using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Collision;
 
