@@ -16,16 +16,6 @@ public static class ChartRunner
 {
     public const string ModelFailed = "model-failed";
 
-    /// <summary>Charts every subject, all held in the report; <paramref name="progress"/> hears (objects done, objects in all) after each.</summary>
-    public static ChartReport Run(IEnumerable<ChartSubject> subjects, ChartOptions options, IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null, Action<int, int>? progress = null)
-    {
-        models ??= ShapeModels.All;
-        var all = subjects.ToArray();
-        var charts = new List<ObjectChart>(all.Length);
-        Stream(all.Length, i => all[i], options, charts.Add, models, timer, progress);
-        return new ChartReport(options, models.Select(m => m.Name).ToArray(), charts);
-    }
-
     /// <summary>
     /// Charts <paramref name="count"/> subjects, made one at a time by <paramref name="subjectAt"/> (null: skipped),
     /// handing each chart to <paramref name="finished"/> in subject order as soon as it and those before it are

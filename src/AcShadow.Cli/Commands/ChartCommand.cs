@@ -93,7 +93,7 @@ public static class ChartCommand
         using var folder = OutputFolderLock.Acquire(outDir);
         AbandonedTemporaries.Remove(outDir);
         var cells = planned?.Scene?.Cells ?? [];
-        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds, cells.Count > 0).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
 
         var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
@@ -141,17 +141,14 @@ public static class ChartCommand
                 {
                     var chartRows = new StreamWriter(chartCsv, new UTF8Encoding(false), 1 << 16);
                     var failureRows = new StreamWriter(failuresCsv, new UTF8Encoding(false), 1 << 16);
-                    chartRows.Write(ChartCsv.Header + "\n");
-                    failureRows.Write(FailuresCsv.Header + "\n");
+                    var files = ChartFiles.Begin(chartRows, failureRows, options, models);
                     tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
                     {
                         warnings.Add(JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics, chart.Notes);
-                        chartRows.Write(ChartCsv.Rows(chart));
-                        failureRows.Write(FailuresCsv.Rows(chart));
+                        var map = files.Add(chart);
                         // The previous run's tables describe other maps: they go before the first map is
                         // replaced, so a run stopped part-way leaves no chart.csv its maps contradict.
                         if (mapsWritten == 0) RemovePreviousTables(outDir);
-                        var map = ChartFiles.FailureMap(options, models, chart);
                         bytes += AtomicOutput.Write(outDir, map.RelativePath, map.Content);
                         mapsWritten++;
                         charted++;
@@ -199,8 +196,8 @@ public static class ChartCommand
             dat.RequireUnchanged();
         }
         var summaries = tally.Summaries();
-        bytes += AtomicOutput.Write(outDir, "summary.csv", new UTF8Encoding(false).GetBytes(SummaryCsv.Write(summaries)));
-        bytes += AtomicOutput.Write(outDir, "speed-accuracy.svg", new UTF8Encoding(false).GetBytes(SpeedAccuracySvg.Write(options, models[0], tally.Objects, summaries)));
+        foreach (var total in ChartFiles.Totals(options, models, tally.Objects, summaries))
+            bytes += AtomicOutput.Write(outDir, total.RelativePath, total.Content);
         folder.RequireStillInPlace();
 
         var chartedSetups = order.Length - unreadable.Count(order.Contains);

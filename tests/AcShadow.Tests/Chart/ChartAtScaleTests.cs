@@ -38,8 +38,8 @@ public class ChartAtScaleTests
             Assert.Equal(Setups, arrived.Select(a => a.Id));
             // Each object is handed over before the next is counted done: nothing waits for the end.
             Assert.Equal([0, 1, 2], arrived.Select(a => a.DoneBefore));
-            Assert.Equal(ChartCsv.Write(whole), ChartCsv.Header + "\n" + rows);
-            Assert.Equal(SummaryCsv.Write(whole), SummaryCsv.Write(tally.Summaries()));
+            Assert.Equal(whole.Text("chart.csv"), ChartCsv.Header + "\n" + rows);
+            Assert.Equal(whole.Text("summary.csv"), SummaryCsv.Write(tally.Summaries()));
         }
     }
 
@@ -186,7 +186,7 @@ public class ChartAtScaleTests
         var chart = new ObjectChart(0x02000001, probes, 1f, new Bounds(new Vector3(-100), new Vector3(100)), null, reference,
             [Outcome("retail", reference, 0, 0), Outcome("model", answers, 1, 1)], "retail", []);
 
-        var svg = FailureMapSvg.Write(new ChartReport(options, ["retail", "model"], [chart]), chart);
+        var svg = FailureMapSvg.Write(options, "retail", chart);
 
         // 201 cells a side is merged 3 × 3 into 67 a side, and every verdict that was there is still drawn.
         Assert.Contains("3 × 3 per cell", svg);

@@ -28,7 +28,7 @@ public class ChartOutputTests
     public void Csv_files_have_their_headers_and_one_row_per_object_and_model()
     {
         var report = SampleChart.Run(null, 0x020019FF, 0x02001000, 0x02002000);
-        var files = ChartFiles.Render(report).ToDictionary(f => f.RelativePath, f => System.Text.Encoding.UTF8.GetString(f.Content));
+        var files = report.Files.ToDictionary(f => f.RelativePath, f => System.Text.Encoding.UTF8.GetString(f.Content));
         var chart = files["chart.csv"].Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal(ChartCsv.Header, chart[0]);
         Assert.Equal(3 * ShapeModels.All.Count, chart.Length - 1);
@@ -50,7 +50,7 @@ public class ChartOutputTests
             ["retail"] = 100, ["union"] = unionNs, ["fallback-cylinder"] = 5, ["spheres"] = 5, ["part-spheres"] = 10, ["part-boxes"] = 8, ["part-hulls"] = 9, ["placement-pose"] = 100,
         });
         // The L-shaped block without placement frames: union poses it as retail does, and nothing cheaper is exact.
-        var report = ChartRunner.Run([SampleChart.Subjects.Value.For(0x02003300)!], new ChartOptions(), timer: timer);
+        var report = SampleChart.Run([SampleChart.Subjects.Value.For(0x02003300)!], new ChartOptions(), timer: timer);
         Assert.Equal(expected, report.Objects.Single().CheapestExact);
     }
 
@@ -82,7 +82,7 @@ public class ChartOutputTests
         try
         {
             CultureInfo.CurrentCulture = CultureInfo.CurrentUICulture = culture;
-            return ChartFiles.Render(SampleChart.Run(null, setups));
+            return SampleChart.Run(null, setups).Files;
         }
         finally
         {

@@ -43,7 +43,7 @@ public class DoorChartTests
     [Fact]
     public void Both_svgs_show_the_door_result()
     {
-        var files = ChartFiles.Render(SampleChart.DoorOnly).ToDictionary(f => f.RelativePath, f => Encoding.UTF8.GetString(f.Content));
+        var files = SampleChart.DoorOnly.Files.ToDictionary(f => f.RelativePath, f => Encoding.UTF8.GetString(f.Content));
         var fallback = Model("fallback-cylinder");
         Assert.Contains($"fallback-cylinder ({fallback.FalsePass} false passes)", files["speed-accuracy.svg"]);
         var map = files["failure-map-0x020019FF.svg"];
@@ -77,7 +77,7 @@ public class DoorChartTests
         Assert.True(fallback.FalsePass > 0);
         Assert.Equal(Math.Min(k, fallback.FalsePass), fallback.Nearest.Count(d => d.FalsePass));
         for (var n = 1; n < fallback.Nearest.Count; n++) Assert.True(fallback.Nearest[n - 1].Nearness <= fallback.Nearest[n].Nearness);
-        var csv = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "failures.csv").Content);
+        var csv = SampleChart.DoorOnly.Text("failures.csv");
         Assert.StartsWith(FailuresCsv.Header + "\n", csv);
         Assert.Contains("0x020019FF,fallback-cylinder,1,", csv);
     }
@@ -87,7 +87,7 @@ public class DoorChartTests
     {
         // Retail is the only exact model of the door: its jambs carry thresholds (no box, no hull) and union's cylinder is square in profile.
         Assert.Equal("retail", Door.CheapestExact);
-        var chart = Encoding.UTF8.GetString(ChartFiles.Render(SampleChart.DoorOnly).Single(f => f.RelativePath == "chart.csv").Content);
+        var chart = SampleChart.DoorOnly.Text("chart.csv");
         Assert.Contains("0x020019FF,retail,3,", chart);
         Assert.Equal(1 + AcShadow.Analysis.Chart.Models.ShapeModels.All.Count, chart.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
     }

@@ -1,4 +1,6 @@
 using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Chart.Output;
 using AcShadow.Core.Dat;
 using AcShadow.Forging;
 
@@ -15,10 +17,47 @@ public static class SampleChart
 
     public const uint Door = 0x020019FF;
 
-    public static ChartReport Run(ChartOptions? options = null, params uint[] setups) =>
-        ChartRunner.Run(setups.Select(id => Subjects.Value.For(id)!), options ?? new ChartOptions(), timer: new FixedTimer());
+    public static SampleRun Run(ChartOptions? options = null, params uint[] setups) =>
+        Run([.. setups.Select(id => Subjects.Value.For(id)!)], options ?? new ChartOptions(), timer: new FixedTimer());
 
-    private static readonly Lazy<ChartReport> DoorReport = new(() => Run(null, Door));
+    /// <summary>
+    /// Charts the subjects the way <c>acshadow chart</c> does (<see cref="ChartRunner.Stream"/> writing
+    /// <see cref="ChartFiles"/>), keeping every object's chart and every file in memory.
+    /// </summary>
+    public static SampleRun Run(IReadOnlyList<ChartSubject> subjects, ChartOptions options, IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null)
+    {
+        models ??= ShapeModels.All;
+        var names = models.Select(m => m.Name).ToArray();
+        var charts = new List<ObjectChart>();
+        var maps = new List<ChartFile>();
+        using var chartCsv = new StringWriter();
+        using var failuresCsv = new StringWriter();
+        var files = ChartFiles.Begin(chartCsv, failuresCsv, options, names);
+        var tally = ChartRunner.Stream(subjects.Count, i => subjects[i], options, chart =>
+        {
+            charts.Add(chart);
+            maps.Add(files.Add(chart));
+        }, models, timer);
+        var totals = ChartFiles.Totals(options, names, tally.Objects, tally.Summaries());
+        ChartFile[] all =
+        [
+            Utf8("chart.csv", chartCsv.ToString()), totals.Single(f => f.RelativePath == "summary.csv"),
+            Utf8("failures.csv", failuresCsv.ToString()), totals.Single(f => f.RelativePath == "speed-accuracy.svg"), .. maps,
+        ];
+        return new SampleRun(options, names, charts, all);
+    }
 
-    public static ChartReport DoorOnly => DoorReport.Value;
+    private static readonly Lazy<SampleRun> DoorReport = new(() => Run(null, Door));
+
+    public static SampleRun DoorOnly => DoorReport.Value;
+
+    private static ChartFile Utf8(string path, string text) => new(path, new System.Text.UTF8Encoding(false).GetBytes(text));
+}
+
+/// <summary>One chart run's options, models (the reference first), charts in subject order, and files in the order a run finishes them.</summary>
+public sealed record SampleRun(ChartOptions Options, IReadOnlyList<string> Models, IReadOnlyList<ObjectChart> Objects, IReadOnlyList<ChartFile> Files)
+{
+    public string Reference => Models[0];
+
+    public string Text(string path) => System.Text.Encoding.UTF8.GetString(Files.Single(f => f.RelativePath == path).Content);
 }

@@ -67,7 +67,7 @@ public class ShapeModelTests
     [Fact]
     public void A_model_that_throws_blocks_nothing_and_the_chart_says_why()
     {
-        var report = ChartRunner.Run([SampleSubject()], new ChartOptions(), [new RetailModel(), new ThrowingModel()], new FixedTimer());
+        var report = SampleChart.Run([SampleSubject()], new ChartOptions(), [new RetailModel(), new ThrowingModel()], new FixedTimer());
         var broken = report.Objects.Single().Models[1];
         Assert.All(broken.Answers, a => Assert.False(a));
         Assert.Contains(broken.Diagnostics, d => d.Code == ChartRunner.ModelFailed && d.Message.Contains("boom"));

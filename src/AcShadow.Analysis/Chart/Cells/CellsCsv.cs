@@ -1,4 +1,5 @@
 using System.Text;
+using AcShadow.Analysis.Chart.Output;
 using static AcShadow.Analysis.Chart.Output.ChartFormat;
 
 namespace AcShadow.Analysis.Chart.Cells;
@@ -14,6 +15,9 @@ public static class CellsCsv
     public const string Header =
         "cell,environment,cell_structure,polygons,model,probes,grid_probes,face_probes,edge_probes,vertex_probes,plane_probes," +
         "blocked,clear,median_ns_per_query,p10_ns_per_query,p90_ns_per_query,diagnostics";
+
+    /// <summary>The file's start (its header row), for the chart's check that it replaces only its own files.</summary>
+    public static ChartFile Head => ChartFiles.Utf8(FileName, Header + "\n");
 
     public static string Write(IEnumerable<CellChart> cells)
     {

@@ -11,13 +11,6 @@ public static class ChartCsv
         "median_ns_per_query,p10_ns_per_query,p90_ns_per_query,exact,cheapest_exact,grid_spacing_m,diagnostics," +
         "face_probes,edge_probes,vertex_probes,plane_probes,stability_false_pass,stability_false_block";
 
-    public static string Write(ChartReport report)
-    {
-        var csv = new StringBuilder(Header).Append('\n');
-        foreach (var o in report.Objects) csv.Append(Rows(o));
-        return csv.ToString();
-    }
-
     /// <summary>One object's rows (one per model), each ending in a newline.</summary>
     public static string Rows(ObjectChart o)
     {

@@ -1,43 +1,66 @@
 using System.Text;
-using AcShadow.Analysis.Chart.Cells;
 
 namespace AcShadow.Analysis.Chart.Output;
 
-/// <summary>Every file a chart run writes, in a fixed order: chart.csv, summary.csv, failures.csv, speed-accuracy.svg, one failure map per object.</summary>
-public static class ChartFiles
+/// <summary>
+/// Every file a chart run writes, as the run writes them: chart.csv and failures.csv grow by each object's
+/// rows, each object's failure map is whole as soon as the object is charted, and summary.csv and
+/// speed-accuracy.svg are made from the run's totals at the end, so memory does not grow with the number
+/// of objects.
+/// </summary>
+public sealed class ChartFiles
 {
-    public static IReadOnlyList<ChartFile> Render(ChartReport report)
+    private readonly TextWriter _chartCsv;
+    private readonly TextWriter _failuresCsv;
+    private readonly ChartOptions _options;
+    private readonly string _reference;
+
+    private ChartFiles(TextWriter chartCsv, TextWriter failuresCsv, ChartOptions options, IReadOnlyList<string> models)
     {
-        var files = new List<ChartFile>
-        {
-            Utf8("chart.csv", ChartCsv.Write(report)),
-            Utf8("summary.csv", SummaryCsv.Write(report)),
-            Utf8("failures.csv", FailuresCsv.Write(report)),
-            Utf8("speed-accuracy.svg", SpeedAccuracySvg.Write(report)),
-        };
-        foreach (var chart in report.Objects) files.Add(Utf8(FailureMapSvg.FileName(chart.SetupId), FailureMapSvg.Write(report, chart)));
-        return files;
+        _chartCsv = chartCsv;
+        _failuresCsv = failuresCsv;
+        _options = options;
+        _reference = models[0];
     }
+
+    /// <summary>Starts chart.csv and failures.csv (their header rows) on these writers; <paramref name="models"/> in order, the reference first.</summary>
+    public static ChartFiles Begin(TextWriter chartCsv, TextWriter failuresCsv, ChartOptions options, IReadOnlyList<string> models)
+    {
+        chartCsv.Write(ChartCsv.Header + "\n");
+        failuresCsv.Write(FailuresCsv.Header + "\n");
+        return new ChartFiles(chartCsv, failuresCsv, options, models);
+    }
+
+    /// <summary>Adds one charted object's rows to chart.csv and failures.csv, and gives its failure map.</summary>
+    public ChartFile Add(ObjectChart chart)
+    {
+        _chartCsv.Write(ChartCsv.Rows(chart));
+        _failuresCsv.Write(FailuresCsv.Rows(chart));
+        return Utf8(FailureMapSvg.FileName(chart.SetupId), FailureMapSvg.Write(_options, _reference, chart));
+    }
+
+    /// <summary>summary.csv and speed-accuracy.svg, from the totals of a run over <paramref name="objects"/> objects.</summary>
+    public static IReadOnlyList<ChartFile> Totals(ChartOptions options, IReadOnlyList<string> models, int objects, IReadOnlyList<ModelSummary> summaries) =>
+    [
+        Utf8("summary.csv", SummaryCsv.Write(summaries)),
+        Utf8("speed-accuracy.svg", SpeedAccuracySvg.Write(options, models[0], objects, summaries)),
+    ];
 
     /// <summary>
     /// The files a run over these objects writes, each with the start of its content (its header row or
     /// root element): for checking, before any object is charted, that no file acshadow does not own would
-    /// be replaced. <paramref name="cells"/>: a landblock's indoor cells are charted too (cells.csv).
+    /// be replaced. <paramref name="cells"/>: cells.csv's, when a landblock's indoor cells are charted too.
     /// </summary>
-    public static IEnumerable<ChartFile> Heads(IEnumerable<uint> objectIds, bool cells = false)
+    public static IEnumerable<ChartFile> Heads(IEnumerable<uint> objectIds, ChartFile? cells = null)
     {
         var svg = new UTF8Encoding(false).GetBytes(new SvgDocument(1, 1).Render());
         yield return Utf8("chart.csv", ChartCsv.Header + "\n");
         yield return Utf8("summary.csv", SummaryCsv.Header + "\n");
         yield return Utf8("failures.csv", FailuresCsv.Header + "\n");
         yield return new ChartFile("speed-accuracy.svg", svg);
-        if (cells) yield return Utf8(CellsCsv.FileName, CellsCsv.Header + "\n");
+        if (cells is not null) yield return cells;
         foreach (var id in objectIds) yield return new ChartFile(FailureMapSvg.FileName(id), svg);
     }
 
-    /// <summary>One object's failure map, rendered as soon as the object is charted.</summary>
-    public static ChartFile FailureMap(ChartOptions options, IReadOnlyList<string> models, ObjectChart chart) =>
-        Utf8(FailureMapSvg.FileName(chart.SetupId), FailureMapSvg.Write(new ChartReport(options, models, []), chart));
-
-    private static ChartFile Utf8(string path, string text) => new(path, new UTF8Encoding(false).GetBytes(text));
+    internal static ChartFile Utf8(string path, string text) => new(path, new UTF8Encoding(false).GetBytes(text));
 }

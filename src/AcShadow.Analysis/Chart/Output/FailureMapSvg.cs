@@ -20,9 +20,9 @@ public static class FailureMapSvg
 
     public static string FileName(uint setupId) => $"failure-map-{Id(setupId)}.svg";
 
-    public static string Write(ChartReport report, ObjectChart chart)
+    public static string Write(ChartOptions options, string reference, ObjectChart chart)
     {
-        var walk = report.Options.EffectiveWalkHeight;
+        var walk = options.EffectiveWalkHeight;
         var slice = Enumerable.Range(0, chart.Probes.Count)
             .Where(i => chart.Probes[i].Kind == ProbeKind.Doorway
                 || (chart.Probes[i].Kind == ProbeKind.Grid && MathF.Abs(chart.Probes[i].Center.Z - walk) < 1e-3f))
@@ -47,9 +47,9 @@ public static class FailureMapSvg
         var height = Top + rows * (plotH + PanelGapY) + 10;
         var svg = new SvgDocument(Math.Max(width, 760), height);
 
-        svg.Text(20, 30, $"Setup {Id(chart.SetupId)}: where each model disagrees with {report.Reference}, seen from above at walking height", 17, "start", "bold");
+        svg.Text(20, 30, $"Setup {Id(chart.SetupId)}: where each model disagrees with {reference}, seen from above at walking height", 17, "start", "bold");
         svg.Text(20, 52,
-            $"slice z = {F(walk, 2)} m (centre of a {F(report.Options.ProbeRadius, 2)} m probe standing on z = 0); cells: grid probes every {F(chart.GridSpacing, 2)} m" +
+            $"slice z = {F(walk, 2)} m (centre of a {F(options.ProbeRadius, 2)} m probe standing on z = 0); cells: grid probes every {F(chart.GridSpacing, 2)} m" +
             (merge > 1 ? $", {I(merge)} × {I(merge)} per cell (worst verdict shown: false pass, false block, both block, both clear)" : "") + "; framed strips: doorway lines",
             12.5);
         Legend(svg, 20, 84);
@@ -82,7 +82,7 @@ public static class FailureMapSvg
             foreach (var line in slice.Where(i => chart.Probes[i].Kind == ProbeKind.Doorway).GroupBy(i => chart.Probes[i].Line))
             {
                 var stripe = 6.0;
-                var along = report.Options.DoorwayStep * scale;
+                var along = options.DoorwayStep * scale;
                 var acrossIsY = chart.Doorway?.AcrossIsY ?? true;
                 double x0 = double.MaxValue, y0 = double.MaxValue, x1 = double.MinValue, y1 = double.MinValue;
                 foreach (var i in line)

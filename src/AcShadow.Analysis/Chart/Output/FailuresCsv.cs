@@ -11,13 +11,6 @@ public static class FailuresCsv
 {
     public const string Header = "setup,model,rank,failure,kind,line,offset_m,x,y,z,radius,gap_to_reference_m,gap_to_model_m";
 
-    public static string Write(ChartReport report)
-    {
-        var csv = new StringBuilder(Header).Append('\n');
-        foreach (var o in report.Objects) csv.Append(Rows(o));
-        return csv.ToString();
-    }
-
     /// <summary>One object's rows, each ending in a newline.</summary>
     public static string Rows(ObjectChart o)
     {

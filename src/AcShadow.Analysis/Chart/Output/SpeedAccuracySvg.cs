@@ -12,7 +12,6 @@ public static class SpeedAccuracySvg
     private const double Width = 1080, Height = 620;
     private const double Left = 90, Right = 400, Top = 78, Bottom = 74;
 
-    public static string Write(ChartReport report) => Write(report.Options, report.Reference, report.Objects.Count, ModelSummary.All(report));
 
     public static string Write(ChartOptions options, string reference, int objects, IReadOnlyList<ModelSummary> summaries)
     {

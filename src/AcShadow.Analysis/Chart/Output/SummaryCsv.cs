@@ -14,7 +14,6 @@ public static class SummaryCsv
         "model,objects,probes,agree,agreement_pct,false_pass,false_block,doorway_probes,doorway_false_pass,doorway_false_block," +
         "exact_objects,min_object_agreement_pct,max_object_agreement_pct,median_ns_per_query,p10_ns_per_query,p90_ns_per_query,cheapest_exact_objects";
 
-    public static string Write(ChartReport report) => Write(ModelSummary.All(report));
 
     public static string Write(IReadOnlyList<ModelSummary> summaries)
     {
