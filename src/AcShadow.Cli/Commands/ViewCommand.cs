@@ -186,15 +186,14 @@ public static partial class ViewCommand
         {
             if (!File.Exists(scenePath))
                 throw new CliException(ExitCodes.NotInDat, $"--fixtures: {folder} has no {FileFormats.Scene.Path}: write it with `acshadow batch --landblock 0xXXYY --out {folder}`");
-            var text = ReadFixture(scenePath, t => t);
-            var scene = ReadFixture(scenePath, FixtureScene.Read);
+            // One read of the file: the package's reader, and each object's landblock-relative frame.
+            var (scene, frames) = ReadFixture(scenePath, json => (FixtureScene.Read(json), SceneFileFrames.Read(json)));
             if (landblock is { } lb && lb != scene.LandblockId)
                 throw new CliException(ExitCodes.NotInDat, $"--fixtures: {scenePath} describes landblock {LandblockIds.Short(scene.LandblockId)}, not {LandblockIds.Short(lb)}");
-            var frames = ReadFixture(scenePath, SceneFileFrames.Read);
             var placements = new List<ViewPlacement>();
             foreach (var o in scene.Objects.Where(o => o.File is not null))
             {
-                var subject = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, PolicyName(text), o.Shapes, Dump);
+                var subject = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, scene.Policy.Name(), o.Shapes, Dump);
                 placements.Add(new ViewPlacement(o.Index, subject, frames[o.Index]));
             }
             scenes.Add(ViewSceneBuilder.ForLandblock(scene.LandblockId, scene.WorldOrigin, placements, failures,
@@ -253,12 +252,6 @@ public static partial class ViewCommand
 
     [System.Text.RegularExpressions.GeneratedRegex(@"^(gfxobjs|cells)/0x[0-9A-F]{8}\.bsp\.json$")]
     private static partial System.Text.RegularExpressions.Regex DumpPath();
-
-    private static string PolicyName(string sceneJson)
-    {
-        using var doc = JsonDocument.Parse(sceneJson);
-        return doc.RootElement.GetProperty("policy").GetString() ?? "retail";
-    }
 
     private static T ReadFixture<T>(string path, Func<string, T> read)
     {
