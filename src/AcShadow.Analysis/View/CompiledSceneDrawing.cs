@@ -1,12 +1,12 @@
 using System.Globalization;
 using System.Numerics;
-using System.Text.Json;
 using AcShadow.Analysis.Compile;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Analysis.View;
 
@@ -30,96 +30,73 @@ public sealed record CompiledPlacement(string Name, uint Id, string Model, ViewF
 public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin, IReadOnlyList<float> MoverRadii, double TolerancePercent,
     IReadOnlyList<CompiledPlacement> Objects, IReadOnlyList<CompiledPlacement> Cells, int Undrawn)
 {
+    /// <summary>
+    /// Reads the file once (the fixtures package's reader) and draws it; refused unless the package also loads
+    /// it as a <see cref="CompiledScene"/>, so nothing is drawn that a consumer could not query.
+    /// </summary>
     /// <param name="bspFile">Reads a BSP dump by its path relative to compiled-scene.json's folder.</param>
     public static CompiledSceneDrawing Read(string json, Func<string, BspDump> bspFile)
     {
-        using var doc = JsonDocument.Parse(json);
-        var root = doc.RootElement;
-        if (root.ValueKind != JsonValueKind.Object)
-            throw new FormatException("not a JSON object");
-        var format = root.TryGetProperty("format", out var f) && f.ValueKind == JsonValueKind.String ? f.GetString() : null;
-        if (format != FileFormats.CompiledScene.Format)
-            throw new FormatException($"its format is {(format is null ? "missing" : $"\"{format}\"")}, not \"{FileFormats.CompiledScene.Format}\" (a file `acshadow scene` writes)");
-        var landblock = Id(root, "landblockId");
-        var origin = Prop(root, "worldOrigin");
-        var worldOrigin = new Vector3(Float(origin[0]), Float(origin[1]), Float(origin[2]));
-        var radii = Prop(root, "moverRadii").EnumerateArray().Select(Float).ToArray();
-
+        var file = CompiledSceneFile.Read(json);
+        var worldOrigin = file.WorldOrigin ?? throw new FormatException("\"worldOrigin\" is missing");
+        RequireFinite("worldOrigin", worldOrigin);
+        RequireFinite("moverRadii", [.. file.MoverRadii]);
         var objects = new List<CompiledPlacement>();
         var undrawn = 0;
-        foreach (var o in Prop(root, "objects").EnumerateArray())
+        foreach (var o in file.Objects)
         {
-            var index = Prop(o, "index").GetInt32();
-            var id = Id(o, "id");
-            var kind = Prop(o, "kind").GetString() switch
+            var kind = o.Kind switch
             {
-                "setup" => "Setup",
-                "gfxObj" => "GfxObj",
-                var other => other ?? throw new FormatException($"object #{index}: \"kind\" is null"),
+                SceneObjectKind.Setup => "Setup",
+                SceneObjectKind.GfxObj => "GfxObj",
+                var other => other.Name(),
             };
-            var name = $"#{index} {kind} {JsonIds.Format(id)}";
-            var model = Prop(o, "model");
-            if (model.ValueKind == JsonValueKind.Null)
+            var name = $"#{o.Index} {kind} {JsonIds.Format(o.Id)}";
+            if (o.Model is not { } modelName)
             {
                 undrawn++;
                 continue;
             }
-            var modelName = model.GetString()!;
             if (!ModelLadder.Names.Contains(modelName))
-                throw new FormatException($"object #{index}: model \"{modelName}\" is none of the ladder's ({string.Join(", ", ModelLadder.Names)})");
-            var shapes = Prop(o, "shapes").EnumerateArray().Select(s => Shape(s, bspFile)).OfType<ViewShape>().ToArray();
-            objects.Add(new CompiledPlacement(name, id, modelName, Frame(o), shapes));
+                throw new FormatException($"object #{o.Index}: model \"{modelName}\" is none of the ladder's ({string.Join(", ", ModelLadder.Names)})");
+            RequireFinite(name, o.Position, o.Rotation);
+            var shapes = o.Shapes.Select(s => Shape(s, bspFile)).OfType<ViewShape>().ToArray();
+            objects.Add(new CompiledPlacement(name, o.Id, modelName, Frame(o.Position, o.Rotation), shapes));
         }
 
         var cells = new List<CompiledPlacement>();
-        foreach (var c in root.TryGetProperty("cells", out var list) ? list.EnumerateArray().ToArray() : [])
+        foreach (var c in file.Cells)
         {
-            var cellId = Id(c, "cellId");
-            var file = Prop(c, "file");
-            if (file.ValueKind == JsonValueKind.Null) continue;
-            var dump = Dump(bspFile, file.GetString()!, CompiledSceneWriter.CellBspPath(cellId), cellId, $"cell {JsonIds.Format(cellId)}");
-            cells.Add(new CompiledPlacement($"cell {JsonIds.Format(cellId)}", cellId, ViewModels.Cells, Frame(c),
-                [ShapeTessellation.Polygons($"cell {JsonIds.Format(cellId)} physics polygons", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), dump)]));
+            if (c.File is null) continue;
+            RequireFinite($"cell {JsonIds.Format(c.CellId)}", c.Position, c.Rotation);
+            var dump = Dump(bspFile, c.File, CompiledSceneWriter.CellBspPath(c.CellId), c.CellId, $"cell {JsonIds.Format(c.CellId)}");
+            cells.Add(new CompiledPlacement($"cell {JsonIds.Format(c.CellId)}", c.CellId, ViewModels.Cells, Frame(c.Position, c.Rotation),
+                [ShapeTessellation.Polygons($"cell {JsonIds.Format(c.CellId)} physics polygons", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), dump)]));
         }
-        return new CompiledSceneDrawing(landblock, worldOrigin, radii, Prop(root, "tolerancePercent").GetDouble(), objects, cells, undrawn);
+        CompiledScene.From(file, bspFile);
+        return new CompiledSceneDrawing(file.LandblockId, worldOrigin, file.MoverRadii, file.TolerancePercent, objects, cells, undrawn);
     }
 
-    private static ViewShape? Shape(JsonElement s, Func<string, BspDump> bspFile)
+    private static ViewShape? Shape(CompiledSceneFile.Shape shape, Func<string, BspDump> bspFile)
     {
-        var type = Prop(s, "type").GetString();
-        var source = Prop(s, "source").GetString() ?? throw new FormatException("a shape's \"source\" is null");
-        var name = type == "bsp" ? source : $"{source} as {type}";
-        switch (type)
+        var source = shape.Source ?? throw new FormatException("a shape's \"source\" is missing or null");
+        var name = shape.Type == "bsp" ? source : $"{source} as {shape.Type}";
+        RequireFinite(source, shape);
+        switch (shape)
         {
-            case "sphere":
-                var r = Float(Prop(s, "radius"));
-                return r > 0f ? ShapeTessellation.Sphere(name, Vec(Prop(s, "center")), r) : null;
-            case "cylinder":
-                var cr = Float(Prop(s, "radius"));
-                var height = Float(Prop(s, "height"));
-                return cr > 0f && height >= 0f ? ShapeTessellation.Cylinder(name, Vec(Prop(s, "base")), cr, height) : null;
-        }
-        var poseJson = Prop(s, "pose");
-        var pose = new PartPose(Vec(Prop(poseJson, "position")), Quat(Prop(poseJson, "orientation")), Float(Prop(poseJson, "scale")));
-        switch (type)
-        {
-            case "box":
-                return ShapeTessellation.Box(name, pose, new OrientedBox(Vec(Prop(s, "center")), Quat(Prop(s, "axes")), Vec(Prop(s, "halfExtents"))));
-            case "hull":
-                var vertices = Prop(s, "vertices").EnumerateArray().Select(Vec).ToArray();
-                var faces = Prop(s, "faces").EnumerateArray().Select((face, i) =>
-                {
-                    var corners = Prop(face, "vertices").EnumerateArray().Select(e => e.GetInt32()).ToArray();
-                    if (corners.Length < 3 || corners.Any(c => c < 0 || c >= vertices.Length))
-                        throw new FormatException($"{source}: hull face {i}: vertex indices must name at least 3 of the hull's {vertices.Length} vertices");
-                    return new CompiledPolygon(i, new Plane(Vec(Prop(face, "normal")), Float(Prop(face, "d"))), corners.Select(c => vertices[c]).ToArray());
-                }).ToArray();
-                return ShapeTessellation.Solid(name, pose, new ConvexPolytope(vertices, faces));
-            case "bsp":
-                var gfxObj = Id(s, "gfxObjId");
-                return ShapeTessellation.Polygons(name, pose, Dump(bspFile, Prop(s, "file").GetString()!, FileFormats.Bsp.PathFor(gfxObj), gfxObj, source));
+            case CompiledSceneFile.SphereShape s:
+                return s.Radius > 0f ? ShapeTessellation.Sphere(name, s.Center, s.Radius) : null;
+            case CompiledSceneFile.CylinderShape c:
+                return c.Radius > 0f && c.Height >= 0f ? ShapeTessellation.Cylinder(name, c.Base, c.Radius, c.Height) : null;
+            case CompiledSceneFile.BoxShape b:
+                return ShapeTessellation.Box(name, b.Pose, b.Box);
+            case CompiledSceneFile.HullShape h:
+                return ShapeTessellation.Solid(name, h.Pose, h.Hull);
+            case CompiledSceneFile.BspShape t:
+                var gfxObj = t.GfxObjId ?? throw new FormatException($"{source}: \"gfxObjId\" is missing or not a hex id");
+                return ShapeTessellation.Polygons(name, t.Pose, Dump(bspFile, t.File, FileFormats.Bsp.PathFor(gfxObj), gfxObj, source));
             default:
-                throw new FormatException($"{source}: shape type \"{type}\" is not sphere, cylinder, box, hull or bsp");
+                throw new FormatException($"{source}: shape type \"{shape.Type}\" is not sphere, cylinder, box, hull or bsp");
         }
     }
 
@@ -134,27 +111,51 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
         return dump;
     }
 
-    private static JsonElement Prop(JsonElement e, string name) =>
-        e.ValueKind == JsonValueKind.Object && e.TryGetProperty(name, out var value) ? value : throw new FormatException($"\"{name}\" is missing");
+    private static ViewFrame Frame(Vector3 position, Quaternion rotation) => new(position, rotation);
 
-    private static ViewFrame Frame(JsonElement e)
+    /// <summary>Every number a drawing uses must be finite: a damaged file is refused rather than drawn as NaN geometry.</summary>
+    private static void RequireFinite(string what, params ReadOnlySpan<float> values)
     {
-        var frame = Prop(e, "landblockFrame");
-        return new ViewFrame(Vec(Prop(frame, "origin")), Quat(Prop(frame, "orientation")));
+        foreach (var value in values)
+            if (!float.IsFinite(value))
+                throw new FormatException(string.Create(CultureInfo.InvariantCulture, $"{what}: {value} is not a finite float"));
     }
 
-    private static uint Id(JsonElement e, string name) =>
-        JsonIds.TryParse(Prop(e, name).GetString(), out var id) ? id : throw new FormatException($"\"{name}\" is not a hex id");
+    private static void RequireFinite(string what, Vector3 v) => RequireFinite(what, v.X, v.Y, v.Z);
 
-    private static Vector3 Vec(JsonElement e) =>
-        e.GetArrayLength() == 3 ? new Vector3(Float(e[0]), Float(e[1]), Float(e[2])) : throw new FormatException("a vector has not 3 numbers");
+    private static void RequireFinite(string what, Quaternion q) => RequireFinite(what, q.X, q.Y, q.Z, q.W);
 
-    private static Quaternion Quat(JsonElement e) =>
-        new(Float(Prop(e, "x")), Float(Prop(e, "y")), Float(Prop(e, "z")), Float(Prop(e, "w")));
-
-    private static float Float(JsonElement e)
+    private static void RequireFinite(string what, Vector3 position, Quaternion rotation)
     {
-        var value = e.GetSingle();
-        return float.IsFinite(value) ? value : throw new FormatException(string.Create(CultureInfo.InvariantCulture, $"{e.GetRawText()} is not a finite float"));
+        RequireFinite(what, position);
+        RequireFinite(what, rotation);
+    }
+
+    private static void RequireFinite(string what, CompiledSceneFile.Shape shape)
+    {
+        if (shape is CompiledSceneFile.PartShape part)
+        {
+            RequireFinite(what, part.Pose.Position, part.Pose.Rotation);
+            RequireFinite(what, part.Pose.Scale);
+        }
+        switch (shape)
+        {
+            case CompiledSceneFile.SphereShape s:
+                RequireFinite(what, s.Center);
+                RequireFinite(what, s.Radius);
+                break;
+            case CompiledSceneFile.CylinderShape c:
+                RequireFinite(what, c.Base);
+                RequireFinite(what, c.Radius, c.Height);
+                break;
+            case CompiledSceneFile.BoxShape b:
+                RequireFinite(what, b.Box.Center, b.Box.Axes);
+                RequireFinite(what, b.Box.HalfExtents);
+                break;
+            case CompiledSceneFile.HullShape h:
+                foreach (var v in h.Hull.Vertices) RequireFinite(what, v);
+                foreach (var f in h.Hull.Faces) RequireFinite(what, f.Normal.X, f.Normal.Y, f.Normal.Z, f.D);
+                break;
+        }
     }
 }

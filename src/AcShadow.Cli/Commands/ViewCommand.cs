@@ -206,7 +206,7 @@ public static partial class ViewCommand
     private const string ShadowSuffix = ".shadow.json";
 
     /// <summary>
-    /// A folder `acshadow scene` wrote: refused unless the consumer library loads it (<see cref="CompiledScene.Read"/>)
+    /// A folder `acshadow scene` wrote, read once: refused unless the consumer library loads it (<see cref="CompiledSceneDrawing.Read"/>)
     /// and every BSP dump it names is the one its id names; no dat is read.
     /// </summary>
     private static ViewScene FromCompiledScene(string folder, uint? landblock, IReadOnlyList<ChartFailure> failures)
@@ -235,7 +235,6 @@ public static partial class ViewCommand
         {
             var json = File.ReadAllText(path);
             drawing = CompiledSceneDrawing.Read(json, Dump);
-            CompiledScene.Read(json, Dump);
         }
         catch (Exception e) when (e is FormatException or JsonException or InvalidOperationException or KeyNotFoundException or IndexOutOfRangeException or ArgumentException)
         {

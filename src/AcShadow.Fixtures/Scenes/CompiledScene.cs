@@ -4,7 +4,6 @@ using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
-using static AcShadow.Fixtures.Json.JsonFields;
 
 namespace AcShadow.Fixtures.Scenes;
 
@@ -61,93 +60,48 @@ public sealed class CompiledScene
     }
 
     /// <summary>From the file's text; <paramref name="bspFile"/> reads a BSP dump by its folder-relative path.</summary>
-    public static CompiledScene Read(string json, Func<string, BspDump> bspFile)
+    public static CompiledScene Read(string json, Func<string, BspDump> bspFile) => From(CompiledSceneFile.Read(json), bspFile);
+
+    /// <summary>The scene a parsed file describes, its BSP dumps read by <paramref name="bspFile"/>, each once.</summary>
+    internal static CompiledScene From(CompiledSceneFile file, Func<string, BspDump> bspFile)
     {
-        using var doc = JsonDocument.Parse(json);
-        var root = doc.RootElement;
-        FormatCheck.Require(root, FileFormats.CompiledScene, "compiled-scene.json");
         var trees = new Dictionary<string, ISphereOverlap>(StringComparer.Ordinal);
         var objects = new List<CompiledObject>();
         var queries = new List<PlacedQuery>();
-        foreach (var o in Arr(root, "objects"))
+        foreach (var o in file.Objects)
         {
-            var frame = Prop(o, "landblockFrame");
-            var position = Vec(Prop(frame, "origin"));
-            var rotation = Quat(Prop(frame, "orientation"));
-            var model = Prop(o, "model");
-            var shapes = Arr(o, "shapes").Select(s => Shape(s, trees, bspFile)).ToArray();
-            var id = JsonIds.TryParse(Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
-            var index = Int(o, "index");
-            var cellId = o.TryGetProperty("cellId", out var c) && c.ValueKind == JsonValueKind.String
-                ? JsonIds.TryParse(c.GetString()!, out var parsedCell) ? parsedCell : throw new FormatException("cellId is not a hex id")
-                : (uint?)null;
-            objects.Add(new CompiledObject(index, id, SceneObjectKinds.Parse(Str(o, "kind")), model.ValueKind == JsonValueKind.Null ? null : model.GetString(), shapes.Length, position, rotation) { CellId = cellId });
-            var bound = Prop(o, "bound");
-            if (shapes.Length == 0 || bound.ValueKind == JsonValueKind.Null) continue;
-            queries.Add(new PlacedQuery(index, id, position, rotation, new AnyOverlap(shapes),
-                Vec(Prop(bound, "center")), Float(bound, "radius")));
+            var shapes = o.Shapes.Select(s => Shape(s, trees, bspFile)).ToArray();
+            objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, o.Position, o.Rotation) { CellId = o.CellId });
+            if (o.Bound is not { } bound) continue;
+            queries.Add(new PlacedQuery(o.Index, o.Id, o.Position, o.Rotation, new AnyOverlap(shapes), bound.Center, bound.Radius));
         }
         var cells = new List<CompiledCell>();
         var cellQueries = new List<SceneCell>();
-        foreach (var e in root.TryGetProperty("cells", out _) ? Arr(root, "cells") : [])
+        foreach (var c in file.Cells)
         {
-            var cellId = JsonIds.TryParse(Str(e, "cellId"), out var parsed) ? parsed : throw new FormatException("cellId is not a hex id");
-            var frame = Prop(e, "landblockFrame");
-            var position = Vec(Prop(frame, "origin"));
-            var rotation = Quat(Prop(frame, "orientation"));
-            var file = Prop(e, "file");
-            if (file.ValueKind == JsonValueKind.Null) continue;
-            cells.Add(new CompiledCell(cellId, Str(e, "model"), position, rotation));
+            if (c.File is null) continue;
+            cells.Add(new CompiledCell(c.CellId, c.Model!, c.Position, c.Rotation));
             try
             {
-                cellQueries.Add(new SceneCell(cellId, new CellOverlapQuery(bspFile(file.GetString()!), position, rotation)));
+                cellQueries.Add(new SceneCell(c.CellId, new CellOverlapQuery(bspFile(c.File), c.Position, c.Rotation)));
             }
             catch (ArgumentException ex)
             {
-                throw new FormatException($"cell {JsonIds.Format(cellId)}: {ex.Message}", ex);
+                throw new FormatException($"cell {JsonIds.Format(c.CellId)}: {ex.Message}", ex);
             }
         }
-        var landblock = JsonIds.TryParse(Str(root, "landblockId"), out var lb) ? lb : throw new FormatException("landblockId is not a hex id");
-        var radii = Arr(root, "moverRadii").Select(Number).ToArray();
-        return new CompiledScene(landblock, radii, Prop(root, "tolerancePercent").GetDouble(), objects, cells, new SceneQuery(queries, cellQueries));
+        return new CompiledScene(file.LandblockId, file.MoverRadii, file.TolerancePercent, objects, cells, new SceneQuery(queries, cellQueries));
     }
 
-    private static ISphereOverlap Shape(JsonElement s, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
+    private static ISphereOverlap Shape(CompiledSceneFile.Shape shape, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile) => shape switch
     {
-        var type = Str(s, "type");
-        switch (type)
-        {
-            case "sphere":
-                var center = Vec(Prop(s, "center"));
-                var r = Float(s, "radius");
-                return new SphereShape(center, r);
-            case "cylinder":
-                return new CylinderShape(Vec(Prop(s, "base")), Float(s, "radius"), Float(s, "height"));
-        }
-        var pose = Prop(s, "pose");
-        var partPose = new PartPose(Vec(Prop(pose, "position")), Quat(Prop(pose, "orientation")), Float(pose, "scale"));
-        ISphereOverlap part = type switch
-        {
-            "box" => new BoxSphereQuery(new OrientedBox(Vec(Prop(s, "center")), Quat(Prop(s, "axes")),
-                Vec(Prop(s, "halfExtents")))),
-            "hull" => Hull(s),
-            "bsp" => Tree(Str(s, "file"), trees, bspFile),
-            _ => throw new FormatException($"shape type \"{type}\" is not sphere, cylinder, box, hull or bsp"),
-        };
-        return new PosedQuery(partPose, part);
-    }
-
-    private static ConvexPolytope Hull(JsonElement s)
-    {
-        var vertices = Arr(s, "vertices").Select(Vec).ToArray();
-        var faces = Arr(s, "faces").Select((f, i) =>
-        {
-            var corners = Arr(f, "vertices").Select(e => e.GetInt32()).ToArray();
-            if (corners.Length < 3 || corners.Any(c => c < 0 || c >= vertices.Length)) throw new FormatException($"hull face {i}: vertex indices must name at least 3 of the hull's vertices");
-            return new CompiledPolygon(i, new Plane(Vec(Prop(f, "normal")), Float(f, "d")), corners.Select(c => vertices[c]).ToArray());
-        }).ToArray();
-        return new ConvexPolytope(vertices, faces);
-    }
+        CompiledSceneFile.SphereShape s => new SphereShape(s.Center, s.Radius),
+        CompiledSceneFile.CylinderShape c => new CylinderShape(c.Base, c.Radius, c.Height),
+        CompiledSceneFile.BoxShape b => new PosedQuery(b.Pose, new BoxSphereQuery(b.Box)),
+        CompiledSceneFile.HullShape h => new PosedQuery(h.Pose, h.Hull),
+        CompiledSceneFile.BspShape t => new PosedQuery(t.Pose, Tree(t.File, trees, bspFile)),
+        _ => throw new FormatException($"shape type \"{shape.Type}\" is not sphere, cylinder, box, hull or bsp"),
+    };
 
     private static ISphereOverlap Tree(string file, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
     {

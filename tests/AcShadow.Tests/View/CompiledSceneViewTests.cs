@@ -319,7 +319,7 @@ public sealed class CompiledSceneViewTests
             (["--scene", otherFile.Path], 2, "not gfxobjs/0x010044B5.bsp.json (the file its id names)"),
             (["--scene", outside.Path], 2, "its BSP dump is \"../0x010044B5.bsp.json\", not gfxobjs/0x010044B5.bsp.json"),
             (["--scene", outsideUndrawn.Path], 2, "\"../../0x010044B5.bsp.json\" is not a BSP dump `acshadow scene` writes"),
-            (["--scene", noExtents.Path], 2, "\"halfExtents\" is missing"),
+            (["--scene", noExtents.Path], 2, "missing field \"halfExtents\""),
             (["--scene", unknownModel.Path], 2, "model \"boxes\" is none of the ladder's"),
             (["--scene", swapped.Path], 2, "holds the tree of 0x010044B6, not of 0x010044B5"),
             (["--scene", missing.Path], 2, "gfxobjs/0x010044B5.bsp.json, which is missing"),
