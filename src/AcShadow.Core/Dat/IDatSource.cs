@@ -1,5 +1,4 @@
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Poses;
 
 namespace AcShadow.Core.Dat;
 

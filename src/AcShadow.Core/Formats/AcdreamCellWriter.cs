@@ -1,7 +1,5 @@
 using System.Numerics;
-using AcShadow.Core.Cells;
 using AcShadow.Core.Dat.Objects;
-using AcShadow.Core.Export;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Core.Json;

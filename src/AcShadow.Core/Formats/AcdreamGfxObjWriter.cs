@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcShadow.Core.Bsp;
-using AcShadow.Core.Export;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Core.Json;

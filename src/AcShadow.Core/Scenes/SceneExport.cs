@@ -1,4 +1,3 @@
-using AcShadow.Core.Batch;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
 

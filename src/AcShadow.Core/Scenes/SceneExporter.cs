@@ -1,4 +1,3 @@
-using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;

@@ -74,6 +74,44 @@ public sealed class LayeringTests
         Assert.True(problems.Count == 0, $"{assembly}:\n" + string.Join("\n", problems));
     }
 
+    /// <summary>
+    /// The compiler copies a constant into the code that uses it, so a use of nothing but a constant leaves
+    /// no trace in the assembly: the source's <c>using</c> directives are held to the same order.
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Layered))]
+    public void No_source_file_imports_a_namespace_above_its_own(string assembly)
+    {
+        var layers = Orders[assembly];
+        var order = layers.Namespaces;
+        var project = Path.Combine(RepositoryRoot.Path, "src", layers.Root);
+        var upward = new List<string>();
+        var files = 0;
+        foreach (var file in Directory.EnumerateFiles(project, "*.cs", SearchOption.AllDirectories).Order(StringComparer.Ordinal))
+        {
+            var relative = Path.GetRelativePath(project, file).Replace('\\', '/');
+            if (relative.StartsWith("obj/", StringComparison.Ordinal) || relative.StartsWith("bin/", StringComparison.Ordinal)) continue;
+            files++;
+            var lines = File.ReadAllLines(file);
+            var own = lines.Select(l => UsingOrNamespace("namespace ", l)).FirstOrDefault(n => n is not null);
+            if (own is null || !order.Contains(own)) continue;
+            foreach (var imported in lines.Select(l => UsingOrNamespace("using static ", l) ?? UsingOrNamespace("using ", l)).OfType<string>())
+            {
+                var target = order.Where(n => imported == n || imported.StartsWith(n + ".", StringComparison.Ordinal)).MaxBy(n => n.Length);
+                if (target is not null && Array.IndexOf(order, target) > Array.IndexOf(order, own) && !KnownUpward.Contains((own, target)))
+                    upward.Add($"{relative} ({own}) imports {imported}, which is above it");
+            }
+        }
+
+        Assert.True(files > 0, $"{project} has no source files");
+        Assert.True(upward.Count == 0, $"{assembly}:\n" + string.Join("\n", upward));
+    }
+
+    private static string? UsingOrNamespace(string keyword, string line) =>
+        line.StartsWith(keyword, StringComparison.Ordinal) && line.TrimEnd().EndsWith(';') && !line.Contains('=', StringComparison.Ordinal)
+            ? line[keyword.Length..].TrimEnd().TrimEnd(';').Trim()
+            : null;
+
     [Theory]
     [MemberData(nameof(Layered))]
     public void No_namespaces_use_each_other_in_a_cycle(string assembly)
