@@ -73,9 +73,7 @@ public static class ChartCommand
         ChartOptions options, float scale, bool quiet, int jobs, Core.Shapes.ShapeBuildOptions pose)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
-        if (File.Exists(outDir))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var missing = ids.Where(id => dat.Portal.ReadSetup(id) is null).ToArray();
         if (missing.Length > 0)
@@ -89,11 +87,9 @@ public static class ChartCommand
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
         var objectIds = order.Concat(bareGfxObjs).ToArray();
 
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
+        using var folder = OutputFolder.Open(outDir);
         var cells = planned?.Scene?.Cells ?? [];
-        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds, cells.Count > 0).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
 
         var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
@@ -136,8 +132,8 @@ public static class ChartCommand
             // place at the end; each failure map is written whole as soon as its object is done, so memory
             // stays flat however many objects there are.
             long failuresBytes = 0;
-            var chartBytes = AtomicOutput.Write(outDir, "chart.csv", chartCsv =>
-                failuresBytes = AtomicOutput.Write(outDir, "failures.csv", failuresCsv =>
+            var chartBytes = folder.Write("chart.csv", chartCsv =>
+                failuresBytes = folder.Write("failures.csv", failuresCsv =>
                 {
                     var chartRows = new StreamWriter(chartCsv, new UTF8Encoding(false), 1 << 16);
                     var failureRows = new StreamWriter(failuresCsv, new UTF8Encoding(false), 1 << 16);
@@ -152,7 +148,7 @@ public static class ChartCommand
                         // replaced, so a run stopped part-way leaves no chart.csv its maps contradict.
                         if (mapsWritten == 0) RemovePreviousTables(outDir);
                         var map = ChartFiles.FailureMap(options, models, chart);
-                        bytes += AtomicOutput.Write(outDir, map.RelativePath, map.Content);
+                        bytes += folder.Write(map.RelativePath, map.Content);
                         mapsWritten++;
                         charted++;
                         probes += chart.Probes.Count;
@@ -195,12 +191,12 @@ public static class ChartCommand
                 warnings.Add(JsonIds.Format(cell.Id), cellChart.Cell.Diagnostics);
                 cellCharts.Add(cellChart);
             }
-            bytes += AtomicOutput.Write(outDir, CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));
+            bytes += folder.Write(CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));
             dat.RequireUnchanged();
         }
         var summaries = tally.Summaries();
-        bytes += AtomicOutput.Write(outDir, "summary.csv", new UTF8Encoding(false).GetBytes(SummaryCsv.Write(summaries)));
-        bytes += AtomicOutput.Write(outDir, "speed-accuracy.svg", new UTF8Encoding(false).GetBytes(SpeedAccuracySvg.Write(options, models[0], tally.Objects, summaries)));
+        bytes += folder.Write("summary.csv", new UTF8Encoding(false).GetBytes(SummaryCsv.Write(summaries)));
+        bytes += folder.Write("speed-accuracy.svg", new UTF8Encoding(false).GetBytes(SpeedAccuracySvg.Write(options, models[0], tally.Objects, summaries)));
         folder.RequireStillInPlace();
 
         var chartedSetups = order.Length - unreadable.Count(order.Contains);

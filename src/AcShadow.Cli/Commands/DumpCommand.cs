@@ -67,7 +67,7 @@ public static class DumpCommand
     private static int RunCell(CliConsole console, uint cellId, string? datPath, string? cellDatPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var cells = dat.Cell ?? throw new CliException(ExitCodes.Usage, $"--cell {JsonIds.Format(cellId)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
         var envCell = cells.ReadEnvCell(cellId)
@@ -101,7 +101,7 @@ public static class DumpCommand
     private static int Run(CliConsole console, uint setupId, string? datPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, null, console);
         var engine = new ExportEngine(dat.Portal, options);
         var export = engine.ExportSetup(setupId)
@@ -119,25 +119,10 @@ public static class DumpCommand
 
     private static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
     {
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
-        ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, f.Content)));
-        long bytes = 0;
-        foreach (var file in files)
-        {
-            console.Interrupted.ThrowIfCancellationRequested();
-            // A file already holding these exact bytes is left alone: no rewrite, its timestamp kept (build
-            // tools and git see no change), and no replace-by-rename (a new inode, the old one freed).
-            if (UnchangedCheck.IsUnchanged(outDir, file.RelativePath, file.Content.Span))
-                console.Out.WriteLine($"unchanged {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes, already these bytes)");
-            else
-            {
-                AtomicOutput.Write(outDir, file.RelativePath, file.Content);
-                console.Out.WriteLine($"wrote {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes)");
-            }
-            bytes += file.Content.Length;
-        }
+        using var folder = OutputFolder.Open(outDir);
+        var contents = files.Select(f => (f.RelativePath, f.Content)).ToArray();
+        folder.RefuseForeign(contents);
+        var bytes = folder.WriteEach(contents, console.Out, console.Interrupted);
         folder.RequireStillInPlace();
         return bytes;
     }

@@ -70,16 +70,13 @@ public static class SceneCommand
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet)
     {
         var clock = Stopwatch.StartNew();
-        if (File.Exists(outDir))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var scene = SelectionOptions.Plan(selection, dat).Scene!;
         if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
+        using var folder = OutputFolder.Open(outDir);
 
         var subjects = new ChartSubjects(dat.Portal);
         var placed = PlacedObject.Of(scene);
@@ -101,12 +98,12 @@ public static class SceneCommand
             warnings.Add(JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
-        ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        folder.RefuseForeign(files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
         long bytes = 0;
         foreach (var file in files)
         {
             console.Interrupted.ThrowIfCancellationRequested();
-            bytes += AtomicOutput.Write(outDir, file.RelativePath, file.Content);
+            bytes += folder.Write(file.RelativePath, file.Content);
         }
         folder.RequireStillInPlace();
 

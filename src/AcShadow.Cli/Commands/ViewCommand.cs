@@ -67,7 +67,7 @@ public static partial class ViewCommand
                     throw new CliException(ExitCodes.Usage, "--scene reads only the folder `acshadow scene` wrote: drop --dat and --cell-dat");
                 if (parse.GetValue(scale) is not null || pose.All.Any(o => parse.GetResult(o) is not null))
                     throw new CliException(ExitCodes.Usage, "--scene views the objects at the scale and in the pose they were compiled with: drop --scale, --pose, --state and --motion-table");
-                OutputPaths.RequireNamed(parse.GetValue(outDir)!);
+                OutputFolder.Check(parse.GetValue(outDir)!);
                 var markers = parse.GetValue(chart) is { } dir ? ReadFailures(dir) : [];
                 return Write(console, parse.GetValue(outDir)!, [FromCompiledScene(sceneFolder, landblock, markers)]);
             }
@@ -75,7 +75,7 @@ public static partial class ViewCommand
                 throw new CliException(ExitCodes.Usage, "--fixtures reads only the folder's JSON: drop --dat and --cell-dat");
             if (folder is not null && parse.GetValue(scale) is not null)
                 throw new CliException(ExitCodes.Usage, "--fixtures views the files at the scale they were written with: drop --scale");
-            OutputPaths.RequireNamed(parse.GetValue(outDir)!);
+            OutputFolder.Check(parse.GetValue(outDir)!);
             if (folder is not null && pose.All.Any(o => parse.GetResult(o) is not null))
                 throw new CliException(ExitCodes.Usage, "--fixtures views the files in the pose they were written with: drop --pose, --state and --motion-table");
             var failures = parse.GetValue(chart) is { } chartDir ? ReadFailures(chartDir) : [];
@@ -301,25 +301,13 @@ public static partial class ViewCommand
     {
         var files = scenes.SelectMany(s => new[]
         {
-            (Path: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
-            (Path: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
+            (RelativePath: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
+            (RelativePath: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
         }).ToArray();
-        WriteProbe.Prepare(outDir);
-        using (var folder = OutputFolderLock.Acquire(outDir))
+        using (var folder = OutputFolder.Open(outDir))
         {
-            AbandonedTemporaries.Remove(outDir);
-            ForeignFileGuard.Refuse(outDir, files.Select(f => (f.Path, f.Content)));
-            foreach (var (path, content) in files)
-            {
-                console.Interrupted.ThrowIfCancellationRequested();
-                if (UnchangedCheck.IsUnchanged(outDir, path, content.Span))
-                    console.Out.WriteLine($"unchanged {Path.Combine(outDir, path)} ({content.Length} bytes, already these bytes)");
-                else
-                {
-                    AtomicOutput.Write(outDir, path, content);
-                    console.Out.WriteLine($"wrote {Path.Combine(outDir, path)} ({content.Length} bytes)");
-                }
-            }
+            folder.RefuseForeign(files);
+            folder.WriteEach(files, console.Out, console.Interrupted);
             folder.RequireStillInPlace();
         }
         foreach (var s in scenes)
