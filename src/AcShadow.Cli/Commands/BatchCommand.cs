@@ -51,11 +51,11 @@ public static class BatchCommand
             parse.GetValue(dat),
             parse.GetValue(selection.CellDat),
             parse.GetValue(outDir)!,
-            pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale)))),
-            SelectionOptions.ParseJobs(parse.GetValue(jobs)),
+            pose.Apply(parse, new ShapeBuildOptions(parse.GetValue(policy) ?? ShapePolicy.Retail, parse.GetValue(scale) ?? 1f)),
+            SelectionOptions.WorkersOrAllCores(parse, jobs),
             parse.GetValue(quiet),
             parse.GetValue(incremental),
-            FormatOption.Parse(parse.GetValue(format))));
+            parse.GetValue(format) ?? OutputFormats.Canonical));
         return command;
     }
 

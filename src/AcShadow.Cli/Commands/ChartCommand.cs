@@ -29,15 +29,15 @@ public static class ChartCommand
 {
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string[]>("--setup") { Description = "a Setup id to chart, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
+        var setup = CommonOptions.SetupIds("a Setup id to chart, e.g. 0x020019FF (repeat for more)");
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.RequiredOut();
-        var radius = new Option<string?>("--probe-radius") { Description = $"query sphere radius in metres (default {F(ChartOptions.DefaultProbeRadius)}, a player)", HelpName = "R" };
-        var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})", HelpName = "S" };
+        var radius = CommonOptions.Metres(ChartOptions.DefaultProbeRadius).Option("--probe-radius", "R", $"query sphere radius in metres (default {F(ChartOptions.DefaultProbeRadius)}, a player)");
+        var spacing = CommonOptions.Metres(ChartOptions.DefaultSpacing).Option("--spacing", "S", $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})");
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
-        var jobs = new Option<string?>("--jobs") { Description = "objects charted side by side (default 1: times per query are then measured undisturbed)", HelpName = "N" };
+        var jobs = SelectionOptions.Jobs("objects charted side by side (default 1: times per query are then measured undisturbed)");
         var pose = new PoseOptions();
         var noCells = SelectionOptions.NoCells();
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
@@ -47,7 +47,7 @@ public static class ChartCommand
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).ToArray();
+            var ids = parse.GetValue(setup) ?? [];
             var chosen = new BatchSelection(parse.GetValue(selection.Doors), parse.GetValue(selection.All), null, null);
             if (parse.GetValue(selection.Setups) is not null || parse.GetValue(selection.Landblock) is not null)
                 chosen = selection.Parse(parse, defaultToAll: false);
@@ -56,13 +56,13 @@ public static class ChartCommand
                 throw new CliException(ExitCodes.Usage, "choose what to chart: --setup ID (repeatable), --doors, --all, --setups FILE and/or --landblock 0xXXYY");
             var options = new ChartOptions
             {
-                ProbeRadius = Metres(parse.GetValue(radius), "--probe-radius", ChartOptions.DefaultProbeRadius),
-                Spacing = Metres(parse.GetValue(spacing), "--spacing", ChartOptions.DefaultSpacing),
+                ProbeRadius = parse.GetValue(radius) ?? ChartOptions.DefaultProbeRadius,
+                Spacing = parse.GetValue(spacing) ?? ChartOptions.DefaultSpacing,
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
-            var jobCount = parse.GetValue(jobs) is { } j ? SelectionOptions.ParseJobs(j) : 1;
+            var jobCount = parse.GetValue(jobs) ?? 1;
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
-                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet), jobCount,
+                parse.GetValue(scale) ?? 1f, parse.GetValue(quiet), jobCount,
 
                 pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail)));
         });
@@ -236,13 +236,6 @@ public static class ChartCommand
                 throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing its failure maps: {e.Message}");
             }
         }
-    }
-
-    private static float Metres(string? text, string option, float fallback)
-    {
-        if (text is null) return fallback;
-        if (float.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) && float.IsFinite(v) && v > 0f) return v;
-        throw new CliException(ExitCodes.Usage, $"{option}: '{text}' is not a positive number of metres: use e.g. {F(fallback)}");
     }
 
     private static string F(float v) => v.ToString(CultureInfo.InvariantCulture);

@@ -26,8 +26,8 @@ public static class DumpCommand
 
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string?>("--setup") { Description = "Setup id, e.g. 0x020019FF", HelpName = "ID" };
-        var cell = new Option<string?>("--cell") { Description = "an indoor cell (EnvCell) id instead, e.g. 0xA9B40100 (needs the cell dat)", HelpName = "ID" };
+        var setup = ValueOptions.Single("--setup", "ID", "Setup id, e.g. 0x020019FF", text => ArgumentParsing.SetupId(text));
+        var cell = ValueOptions.Single("--cell", "ID", "an indoor cell (EnvCell) id instead, e.g. 0xA9B40100 (needs the cell dat)", CellId);
         var cellDat = new Option<string?>("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --cell", HelpName = "PATH" };
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DefaultOut);
@@ -42,14 +42,14 @@ public static class DumpCommand
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var options = pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))));
-            var formats = FormatOption.Parse(parse.GetValue(format));
-            var (setupText, cellText) = (parse.GetValue(setup), parse.GetValue(cell));
-            if ((setupText is null) == (cellText is null))
+            var options = pose.Apply(parse, new ShapeBuildOptions(parse.GetValue(policy) ?? ShapePolicy.Retail, parse.GetValue(scale) ?? 1f));
+            var formats = parse.GetValue(format) ?? OutputFormats.Canonical;
+            var (setupId, cellId) = (parse.GetValue(setup), parse.GetValue(cell));
+            if ((setupId is null) == (cellId is null))
                 throw new CliException(ExitCodes.Usage, "dump: give exactly one of --setup ID and --cell ID");
-            return setupText is not null
-                ? Run(console, ArgumentParsing.SetupId(setupText), parse.GetValue(dat), parse.GetValue(outDir)!, options, formats)
-                : RunCell(console, CellId(cellText!), parse.GetValue(dat), parse.GetValue(cellDat), parse.GetValue(outDir)!, options, formats);
+            return setupId is { } id
+                ? Run(console, id, parse.GetValue(dat), parse.GetValue(outDir)!, options, formats)
+                : RunCell(console, cellId!.Value, parse.GetValue(dat), parse.GetValue(cellDat), parse.GetValue(outDir)!, options, formats);
         });
         return command;
     }

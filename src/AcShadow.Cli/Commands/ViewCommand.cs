@@ -34,7 +34,7 @@ public static partial class ViewCommand
 
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string[]>("--setup") { Description = "a Setup to view, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
+        var setup = CommonOptions.SetupIds("a Setup to view, e.g. 0x020019FF (repeat for more)");
         var selection = new SelectionOptions();
         var fixtures = new Option<string?>("--fixtures") { Description = "read a folder `dump` or `batch` wrote (shadow files, BSP dumps, scene.json) instead of a dat; with no --setup or --landblock, everything in it", HelpName = "DIR" };
         var compiled = new Option<string?>("--scene") { Description = "read a folder `scene` wrote (compiled-scene.json and its BSP dumps) instead of a dat: the landblock with each object as its chosen model", HelpName = "DIR" };
@@ -50,11 +50,8 @@ public static partial class ViewCommand
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).Distinct().ToArray();
-            uint? landblock = null;
-            if (parse.GetValue(selection.Landblock) is { } text)
-                landblock = LandblockIds.TryParse(text, out var lb) ? lb
-                    : throw new CliException(ExitCodes.Usage, $"--landblock: '{text}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
+            var ids = (parse.GetValue(setup) ?? []).Distinct().ToArray();
+            var landblock = parse.GetValue(selection.Landblock);
             var folder = parse.GetValue(fixtures);
             var sceneFolder = parse.GetValue(compiled);
             if (folder is null && sceneFolder is null && ids.Length == 0 && landblock is null)
@@ -82,7 +79,7 @@ public static partial class ViewCommand
             var scenes = folder is not null
                 ? FromFixtures(console, folder, ids, landblock, failures)
                 : FromDat(console, parse.GetValue(dat), parse.GetValue(selection.CellDat), ids, landblock,
-                    pose.Apply(parse, new ShapeBuildOptions(ShapePolicy.Retail, ArgumentParsing.Scale(parse.GetValue(scale)))), failures);
+                    pose.Apply(parse, new ShapeBuildOptions(ShapePolicy.Retail, parse.GetValue(scale) ?? 1f)), failures);
             return Write(console, parse.GetValue(outDir)!, scenes);
         });
         return command;
