@@ -1,5 +1,4 @@
 using System.CommandLine;
-using System.Globalization;
 using System.Text;
 using AcShadow.Analysis.Audit;
 using AcShadow.Analysis.Chart;
