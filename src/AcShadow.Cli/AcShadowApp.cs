@@ -26,10 +26,13 @@ public static class AcShadowApp
         VersionAction.Install(root);
 
         var parse = root.Parse(args);
-        if (parse.Errors.Count > 0)
+        // A bad option value is the command's own usage error, reported below like one; any other parse error first.
+        var refused = ValueOptions.Refusal(parse);
+        if (refused is null && parse.Errors.Count > 0)
         {
+            var errors = parse.Errors.Where(e => !ValueOptions.IsRefusal(e)).ToArray();
             // An unrecognised word says more than the "required command" error it also causes.
-            var error = parse.Errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? parse.Errors[0];
+            var error = errors.FirstOrDefault(e => e.Message.StartsWith("Unrecognized", StringComparison.Ordinal)) ?? errors[0];
             var command = parse.CommandResult.Command;
             var help = command == root ? "acshadow --help" : $"acshadow {command.Name} --help";
             var suggestion = TypoSuggestion.For(parse) is { } near ? $" Did you mean '{near}'?" : "";
@@ -38,6 +41,7 @@ public static class AcShadowApp
         }
         try
         {
+            refused?.Throw();
             return parse.Invoke(new InvocationConfiguration { Output = console.Out, Error = console.Error, EnableDefaultExceptionHandler = false });
         }
         catch (Exception thrown)

@@ -1,5 +1,4 @@
 using System.CommandLine;
-using System.Globalization;
 using System.Text;
 using AcShadow.Analysis.Audit;
 using AcShadow.Analysis.Chart;
@@ -20,12 +19,13 @@ public static class AuditCommand
     {
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
-        var format = new Option<string?>("--format") { Description = "table (default on stdout), csv, json or md (default for --out: from its extension)", HelpName = "table|csv|json|md" };
+        var format = ValueOptions.Single("--format", "table|csv|json|md", "table (default on stdout), csv, json or md (default for --out: from its extension)", ParseFormat);
         var outFile = new Option<string?>("--out") { Description = "write the report to FILE instead of stdout", HelpName = "FILE" };
         var onlyBsp = new Option<bool>("--only-bsp") { Description = "only Setups with a BSP-bearing part" };
         var flagMismatch = new Option<bool>("--flag-mismatch") { Description = "only Setups whose HasPhysicsBSP flag disagrees with their parts" };
-        var maxCoverage = new Option<string?>("--max-coverage") { Description = "only Setups whose fallback cylinder covers at most X (0..1) of the BSP footprint", HelpName = "X" };
-        var sort = new Option<string?>("--sort") { Description = $"sort by a column ({string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))}); prefix - for descending", HelpName = "FIELD" };
+        var maxCoverage = new NumberRule<double>("a fraction", "use a number from 0 to 1, e.g. 0.1") { From = 0, To = 1 }
+            .Option("--max-coverage", "X", "only Setups whose fallback cylinder covers at most X (0..1) of the BSP footprint");
+        var sort = ValueOptions.Text("--sort", "FIELD", $"sort by a column ({string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))}); prefix - for descending", ParseSort);
         var chart = new Option<bool>("--chart") { Description = "also run the collision chart per Setup: which shape models are exact, and the cheapest (slow)" };
         var jobs = SelectionOptions.Jobs();
         var pose = new PoseOptions();
@@ -39,11 +39,11 @@ public static class AuditCommand
         command.SetAction(parse =>
         {
             var query = new AuditQuery(parse.GetValue(onlyBsp), parse.GetValue(flagMismatch),
-                ParseCoverage(parse.GetValue(maxCoverage)), ParseSort(parse.GetValue(sort))) { PoseDiffers = parse.GetValue(poseDiffers) };
+                parse.GetValue(maxCoverage), parse.GetValue(sort) ?? "id") { PoseDiffers = parse.GetValue(poseDiffers) };
             var poseOptions = pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail));
             var output = parse.GetValue(outFile);
             return Run(console, selection.Parse(parse, defaultToAll: true), parse.GetValue(dat), parse.GetValue(selection.CellDat),
-                query, ParseFormat(parse.GetValue(format), output), output, SelectionOptions.ParseJobs(parse.GetValue(jobs)), parse.GetValue(chart), poseOptions);
+                query, parse.GetValue(format) ?? DefaultFormat(output), output, SelectionOptions.WorkersOrAllCores(parse, jobs), parse.GetValue(chart), poseOptions);
         });
         return command;
     }
@@ -80,24 +80,15 @@ public static class AuditCommand
         return ExitCodes.Ok;
     }
 
-    private static AuditFormat ParseFormat(string? text, string? output)
-    {
-        if (text is null) return output is null ? AuditFormat.Table : AuditFormats.FromExtension(output) ?? AuditFormat.Table;
-        if (AuditFormats.TryParse(text, out var format)) return format;
-        throw new CliException(ExitCodes.Usage, $"--format: '{text}' is not a format: use table, csv, json or md");
-    }
+    /// <summary>With no --format: a table on stdout, else the --out file's extension says.</summary>
+    private static AuditFormat DefaultFormat(string? output) =>
+        output is null ? AuditFormat.Table : AuditFormats.FromExtension(output) ?? AuditFormat.Table;
 
-    private static double? ParseCoverage(string? text)
-    {
-        if (text is null) return null;
-        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var x) && x is >= 0 and <= 1) return x;
-        throw new CliException(ExitCodes.Usage, $"--max-coverage: '{text}' is not a fraction: use a number from 0 to 1, e.g. 0.1");
-    }
+    private static AuditFormat ParseFormat(string text) =>
+        AuditFormats.TryParse(text, out var format) ? format
+            : throw new CliException(ExitCodes.Usage, $"--format: '{text}' is not a format: use table, csv, json or md");
 
-    private static string ParseSort(string? text)
-    {
-        if (text is null) return "id";
-        if (AuditColumns.Find(text.TrimStart('-', '+')) is not null) return text;
-        throw new CliException(ExitCodes.Usage, $"--sort: '{text}' is not a column: use one of {string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))} (prefix - for descending)");
-    }
+    private static string ParseSort(string text) =>
+        AuditColumns.Find(text.TrimStart('-', '+')) is not null ? text
+            : throw new CliException(ExitCodes.Usage, $"--sort: '{text}' is not a column: use one of {string.Join(", ", AuditColumns.WithChart.Select(c => c.Key))} (prefix - for descending)");
 }

@@ -51,11 +51,11 @@ public static class BatchCommand
             parse.GetValue(dat),
             parse.GetValue(selection.CellDat),
             parse.GetValue(outDir)!,
-            pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale)))),
-            SelectionOptions.ParseJobs(parse.GetValue(jobs)),
+            pose.Apply(parse, new ShapeBuildOptions(parse.GetValue(policy) ?? ShapePolicy.Retail, parse.GetValue(scale) ?? 1f)),
+            SelectionOptions.WorkersOrAllCores(parse, jobs),
             parse.GetValue(quiet),
             parse.GetValue(incremental),
-            FormatOption.Parse(parse.GetValue(format))));
+            parse.GetValue(format) ?? OutputFormats.Canonical));
         return command;
     }
 
@@ -70,14 +70,10 @@ public static class BatchCommand
         ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
-        if (File.Exists(outDir))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
+        using var folder = OutputFolder.Open(outDir);
         var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
         {
             Formats = formats,
@@ -85,7 +81,7 @@ public static class BatchCommand
             DoorState = options.DoorState,
             MotionTable = options.MotionTable,
         };
-        RefuseForeignFiles(outDir, plan, formats);
+        RefuseForeignFiles(folder, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         // A second view over the same archive; `dat` owns and disposes the archive.
         var source = new DatDatabase(dat.Portal.Archive, cacheCapacity: 256);
@@ -100,13 +96,13 @@ public static class BatchCommand
         // avoids replacing a file, whose freed inode every later create in the next minute steps over.
         void Write(string path, ReadOnlyMemory<byte> content)
         {
-            if (UnchangedCheck.IsUnchanged(outDir, path, content.Span)) Interlocked.Increment(ref unchanged);
+            if (folder.IsUnchanged(path, content.Span)) Interlocked.Increment(ref unchanged);
             else
             {
                 // An index describes a finished run: the old one goes before the first file changes, so a run
                 // stopped part-way leaves a folder verify calls incomplete, not an index its files contradict.
                 if (Interlocked.Exchange(ref indexRemoved, 1) == 0) RemoveIndex(outDir);
-                Interlocked.Add(ref written, AtomicOutput.Write(outDir, path, content));
+                Interlocked.Add(ref written, folder.Write(path, content));
                 Interlocked.Increment(ref filesWritten);
             }
         }
@@ -146,7 +142,7 @@ public static class BatchCommand
         {
             // Streamed to its file: on a retail dat index.json is megabytes, and a buffer for it would be the
             // run's largest allocation, at its very end.
-            written += AtomicOutput.Write(outDir, FileFormats.Index.Path, result.WriteIndex);
+            written += folder.Write(FileFormats.Index.Path, result.WriteIndex);
             filesWritten++;
         }
         folder.RequireStillInPlace();
@@ -175,8 +171,9 @@ public static class BatchCommand
     /// shadow files, gfxobjs/, scene.json, cells/, index.json, incremental.json) that the folder's index.json does
     /// not list must carry the signature of the acshadow format its name stands for.
     /// </summary>
-    private static void RefuseForeignFiles(string outDir, BatchPlan plan, OutputFormats formats)
+    private static void RefuseForeignFiles(OutputFolder folder, BatchPlan plan, OutputFormats formats)
     {
+        var outDir = folder.Root;
         var listed = IndexListing.Read(outDir);
         var candidates = new List<(string Path, byte[] Head)>();
         // A file the index lists is ours even when damaged; anything but a regular file never is.
@@ -210,7 +207,7 @@ public static class BatchCommand
         }
         Consider(FileFormats.Index.Path, FileFormats.Index.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
-        ForeignFileGuard.Refuse(outDir, candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
+        folder.RefuseForeign(candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
     }
 
     private static void RemoveIndex(string outDir)

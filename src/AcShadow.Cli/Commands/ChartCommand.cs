@@ -29,15 +29,15 @@ public static class ChartCommand
 {
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string[]>("--setup") { Description = "a Setup id to chart, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
+        var setup = CommonOptions.SetupIds("a Setup id to chart, e.g. 0x020019FF (repeat for more)");
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.RequiredOut();
-        var radius = new Option<string?>("--probe-radius") { Description = $"query sphere radius in metres (default {F(ChartOptions.DefaultProbeRadius)}, a player)", HelpName = "R" };
-        var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})", HelpName = "S" };
+        var radius = CommonOptions.Metres(ChartOptions.DefaultProbeRadius).Option("--probe-radius", "R", $"query sphere radius in metres (default {F(ChartOptions.DefaultProbeRadius)}, a player)");
+        var spacing = CommonOptions.Metres(ChartOptions.DefaultSpacing).Option("--spacing", "S", $"grid spacing in metres (default {F(ChartOptions.DefaultSpacing)})");
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
-        var jobs = new Option<string?>("--jobs") { Description = "objects charted side by side (default 1: times per query are then measured undisturbed)", HelpName = "N" };
+        var jobs = SelectionOptions.Jobs("objects charted side by side (default 1: times per query are then measured undisturbed)");
         var pose = new PoseOptions();
         var noCells = SelectionOptions.NoCells();
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
@@ -47,7 +47,7 @@ public static class ChartCommand
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).ToArray();
+            var ids = parse.GetValue(setup) ?? [];
             var chosen = new BatchSelection(parse.GetValue(selection.Doors), parse.GetValue(selection.All), null, null);
             if (parse.GetValue(selection.Setups) is not null || parse.GetValue(selection.Landblock) is not null)
                 chosen = selection.Parse(parse, defaultToAll: false);
@@ -56,13 +56,13 @@ public static class ChartCommand
                 throw new CliException(ExitCodes.Usage, "choose what to chart: --setup ID (repeatable), --doors, --all, --setups FILE and/or --landblock 0xXXYY");
             var options = new ChartOptions
             {
-                ProbeRadius = Metres(parse.GetValue(radius), "--probe-radius", ChartOptions.DefaultProbeRadius),
-                Spacing = Metres(parse.GetValue(spacing), "--spacing", ChartOptions.DefaultSpacing),
+                ProbeRadius = parse.GetValue(radius) ?? ChartOptions.DefaultProbeRadius,
+                Spacing = parse.GetValue(spacing) ?? ChartOptions.DefaultSpacing,
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
-            var jobCount = parse.GetValue(jobs) is { } j ? SelectionOptions.ParseJobs(j) : 1;
+            var jobCount = parse.GetValue(jobs) ?? 1;
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
-                ArgumentParsing.Scale(parse.GetValue(scale)), parse.GetValue(quiet), jobCount,
+                parse.GetValue(scale) ?? 1f, parse.GetValue(quiet), jobCount,
 
                 pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail)));
         });
@@ -73,9 +73,7 @@ public static class ChartCommand
         ChartOptions options, float scale, bool quiet, int jobs, Core.Shapes.ShapeBuildOptions pose)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
-        if (File.Exists(outDir))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var missing = ids.Where(id => dat.Portal.ReadSetup(id) is null).ToArray();
         if (missing.Length > 0)
@@ -89,11 +87,9 @@ public static class ChartCommand
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
         var objectIds = order.Concat(bareGfxObjs).ToArray();
 
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
+        using var folder = OutputFolder.Open(outDir);
         var cells = planned?.Scene?.Cells ?? [];
-        ForeignFileGuard.Refuse(outDir, ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
 
         var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
@@ -136,8 +132,8 @@ public static class ChartCommand
             // place at the end; each failure map is written whole as soon as its object is done, so memory
             // stays flat however many objects there are.
             long failuresBytes = 0;
-            var chartBytes = AtomicOutput.Write(outDir, "chart.csv", chartCsv =>
-                failuresBytes = AtomicOutput.Write(outDir, "failures.csv", failuresCsv =>
+            var chartBytes = folder.Write("chart.csv", chartCsv =>
+                failuresBytes = folder.Write("failures.csv", failuresCsv =>
                 {
                     var chartRows = new StreamWriter(chartCsv, new UTF8Encoding(false), 1 << 16);
                     var failureRows = new StreamWriter(failuresCsv, new UTF8Encoding(false), 1 << 16);
@@ -149,7 +145,7 @@ public static class ChartCommand
                         // The previous run's tables describe other maps: they go before the first map is
                         // replaced, so a run stopped part-way leaves no chart.csv its maps contradict.
                         if (mapsWritten == 0) RemovePreviousTables(outDir);
-                        bytes += AtomicOutput.Write(outDir, map.RelativePath, map.Content);
+                        bytes += folder.Write(map.RelativePath, map.Content);
                         mapsWritten++;
                         charted++;
                         probes += chart.Probes.Count;
@@ -192,12 +188,12 @@ public static class ChartCommand
                 warnings.Add(JsonIds.Format(cell.Id), cellChart.Cell.Diagnostics);
                 cellCharts.Add(cellChart);
             }
-            bytes += AtomicOutput.Write(outDir, CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));
+            bytes += folder.Write(CellsCsv.FileName, new UTF8Encoding(false).GetBytes(CellsCsv.Write(cellCharts)));
             dat.RequireUnchanged();
         }
         var summaries = tally.Summaries();
         foreach (var total in ChartFiles.Totals(options, models, tally.Objects, summaries))
-            bytes += AtomicOutput.Write(outDir, total.RelativePath, total.Content);
+            bytes += folder.Write(total.RelativePath, total.Content);
         folder.RequireStillInPlace();
 
         var chartedSetups = order.Length - unreadable.Count(order.Contains);
@@ -237,13 +233,6 @@ public static class ChartCommand
                 throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing its failure maps: {e.Message}");
             }
         }
-    }
-
-    private static float Metres(string? text, string option, float fallback)
-    {
-        if (text is null) return fallback;
-        if (float.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) && float.IsFinite(v) && v > 0f) return v;
-        throw new CliException(ExitCodes.Usage, $"{option}: '{text}' is not a positive number of metres: use e.g. {F(fallback)}");
     }
 
     private static string F(float v) => v.ToString(CultureInfo.InvariantCulture);

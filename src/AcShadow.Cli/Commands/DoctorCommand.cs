@@ -27,7 +27,7 @@ public static class DoctorCommand
             dat, cellDat, outFile, jobs,
         };
         command.SetAction(parse => Run(console, parse.GetValue(dat), parse.GetValue(cellDat), parse.GetValue(outFile),
-            SelectionOptions.ParseJobs(parse.GetValue(jobs))));
+            SelectionOptions.WorkersOrAllCores(parse, jobs)));
         return command;
     }
 

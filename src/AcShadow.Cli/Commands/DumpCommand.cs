@@ -26,8 +26,8 @@ public static class DumpCommand
 
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string?>("--setup") { Description = "Setup id, e.g. 0x020019FF", HelpName = "ID" };
-        var cell = new Option<string?>("--cell") { Description = "an indoor cell (EnvCell) id instead, e.g. 0xA9B40100 (needs the cell dat)", HelpName = "ID" };
+        var setup = ValueOptions.Single("--setup", "ID", "Setup id, e.g. 0x020019FF", text => ArgumentParsing.SetupId(text));
+        var cell = ValueOptions.Single("--cell", "ID", "an indoor cell (EnvCell) id instead, e.g. 0xA9B40100 (needs the cell dat)", CellId);
         var cellDat = new Option<string?>("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --cell", HelpName = "PATH" };
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DefaultOut);
@@ -42,14 +42,14 @@ public static class DumpCommand
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var options = pose.Apply(parse, new ShapeBuildOptions(ArgumentParsing.Policy(parse.GetValue(policy)), ArgumentParsing.Scale(parse.GetValue(scale))));
-            var formats = FormatOption.Parse(parse.GetValue(format));
-            var (setupText, cellText) = (parse.GetValue(setup), parse.GetValue(cell));
-            if ((setupText is null) == (cellText is null))
+            var options = pose.Apply(parse, new ShapeBuildOptions(parse.GetValue(policy) ?? ShapePolicy.Retail, parse.GetValue(scale) ?? 1f));
+            var formats = parse.GetValue(format) ?? OutputFormats.Canonical;
+            var (setupId, cellId) = (parse.GetValue(setup), parse.GetValue(cell));
+            if ((setupId is null) == (cellId is null))
                 throw new CliException(ExitCodes.Usage, "dump: give exactly one of --setup ID and --cell ID");
-            return setupText is not null
-                ? Run(console, ArgumentParsing.SetupId(setupText), parse.GetValue(dat), parse.GetValue(outDir)!, options, formats)
-                : RunCell(console, CellId(cellText!), parse.GetValue(dat), parse.GetValue(cellDat), parse.GetValue(outDir)!, options, formats);
+            return setupId is { } id
+                ? Run(console, id, parse.GetValue(dat), parse.GetValue(outDir)!, options, formats)
+                : RunCell(console, cellId!.Value, parse.GetValue(dat), parse.GetValue(cellDat), parse.GetValue(outDir)!, options, formats);
         });
         return command;
     }
@@ -67,7 +67,7 @@ public static class DumpCommand
     private static int RunCell(CliConsole console, uint cellId, string? datPath, string? cellDatPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var cells = dat.Cell ?? throw new CliException(ExitCodes.Usage, $"--cell {JsonIds.Format(cellId)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");
         var envCell = cells.ReadEnvCell(cellId)
@@ -101,7 +101,7 @@ public static class DumpCommand
     private static int Run(CliConsole console, uint setupId, string? datPath, string outDir, ShapeBuildOptions options, OutputFormats formats)
     {
         var clock = Stopwatch.StartNew();
-        OutputPaths.RequireNamed(outDir);
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, null, console);
         var engine = new ExportEngine(dat.Portal, options);
         var export = engine.ExportSetup(setupId)
@@ -119,25 +119,10 @@ public static class DumpCommand
 
     private static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
     {
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
-        ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, f.Content)));
-        long bytes = 0;
-        foreach (var file in files)
-        {
-            console.Interrupted.ThrowIfCancellationRequested();
-            // A file already holding these exact bytes is left alone: no rewrite, its timestamp kept (build
-            // tools and git see no change), and no replace-by-rename (a new inode, the old one freed).
-            if (UnchangedCheck.IsUnchanged(outDir, file.RelativePath, file.Content.Span))
-                console.Out.WriteLine($"unchanged {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes, already these bytes)");
-            else
-            {
-                AtomicOutput.Write(outDir, file.RelativePath, file.Content);
-                console.Out.WriteLine($"wrote {Path.Combine(outDir, file.RelativePath)} ({file.Content.Length} bytes)");
-            }
-            bytes += file.Content.Length;
-        }
+        using var folder = OutputFolder.Open(outDir);
+        var contents = files.Select(f => (f.RelativePath, f.Content)).ToArray();
+        folder.RefuseForeign(contents);
+        var bytes = folder.WriteEach(contents, console.Out, console.Interrupted);
         folder.RequireStillInPlace();
         return bytes;
     }

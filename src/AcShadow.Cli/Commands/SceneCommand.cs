@@ -29,13 +29,11 @@ public static class SceneCommand
         var selection = new SelectionOptions();
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.RequiredOut();
-        var radius = new Option<string[]>("--mover-radius")
-        {
-            Description = $"a mover sphere radius in metres to be exact for (repeat for more; default {ChartOptions.DefaultProbeRadius.ToString(CultureInfo.InvariantCulture)}, a player); the first also sizes the grid",
-            HelpName = "R",
-        };
-        var tolerance = new Option<string?>("--tolerance") { Description = "allow a model whose false blocks are at most P % of an object's probes (never a false pass; default 0: exact)", HelpName = "P" };
-        var spacing = new Option<string?>("--spacing") { Description = $"grid spacing in metres (default {ChartOptions.DefaultSpacing.ToString(CultureInfo.InvariantCulture)})", HelpName = "S" };
+        var radius = CommonOptions.Metres(0.48f).Repeated("--mover-radius", "R",
+            $"a mover sphere radius in metres to be exact for (repeat for more; default {ChartOptions.DefaultProbeRadius.ToString(CultureInfo.InvariantCulture)}, a player); the first also sizes the grid");
+        var tolerance = new NumberRule<double>("a percentage from 0 to 100", "use e.g. 0.5") { From = 0, To = 100 }
+            .Option("--tolerance", "P", "allow a model whose false blocks are at most P % of an object's probes (never a false pass; default 0: exact)");
+        var spacing = CommonOptions.Metres(0.25f).Option("--spacing", "S", $"grid spacing in metres (default {ChartOptions.DefaultSpacing.ToString(CultureInfo.InvariantCulture)})");
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var noCells = SelectionOptions.NoCells();
@@ -48,18 +46,18 @@ public static class SceneCommand
             if (parse.GetValue(selection.Landblock) is null)
                 throw new CliException(ExitCodes.Usage, "choose the landblock to compile: --landblock 0xXXYY");
             var chosen = SelectionOptions.WithoutCells(selection.Parse(parse, defaultToAll: false), parse.GetValue(noCells));
-            var radii = (parse.GetValue(radius) ?? []).Select(t => Number(t, "--mover-radius", "a positive number of metres", 0.48, v => v > 0)).Select(v => (float)v).ToArray();
+            var radii = parse.GetValue(radius) ?? [];
             var chart = new ChartOptions
             {
                 ProbeRadius = radii.Length > 0 ? radii[0] : ChartOptions.DefaultProbeRadius,
                 MoverRadii = radii.Skip(1).ToArray(),
-                Spacing = parse.GetValue(spacing) is { } s ? (float)Number(s, "--spacing", "a positive number of metres", 0.25, v => v > 0) : ChartOptions.DefaultSpacing,
+                Spacing = parse.GetValue(spacing) ?? ChartOptions.DefaultSpacing,
             };
             var options = new SceneCompileOptions
             {
                 Chart = chart,
-                EntityScale = ArgumentParsing.Scale(parse.GetValue(scale)),
-                TolerancePercent = parse.GetValue(tolerance) is { } p ? Number(p, "--tolerance", "a percentage from 0 to 100", 0.5, v => v is >= 0 and <= 100) : 0,
+                EntityScale = parse.GetValue(scale) ?? 1f,
+                TolerancePercent = parse.GetValue(tolerance) ?? 0,
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
             return Run(console, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options, parse.GetValue(quiet));
@@ -70,16 +68,13 @@ public static class SceneCommand
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet)
     {
         var clock = Stopwatch.StartNew();
-        if (File.Exists(outDir))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {outDir} is a file: pass a folder (it is created when missing)");
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
         var scene = SelectionOptions.Plan(selection, dat).Scene!;
         if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
-        WriteProbe.Prepare(outDir);
-        using var folder = OutputFolderLock.Acquire(outDir);
-        AbandonedTemporaries.Remove(outDir);
+        using var folder = OutputFolder.Open(outDir);
 
         var subjects = new ChartSubjects(dat.Portal);
         var placed = PlacedObject.Of(scene);
@@ -101,12 +96,12 @@ public static class SceneCommand
             warnings.Add(JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
-        ForeignFileGuard.Refuse(outDir, files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        folder.RefuseForeign(files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
         long bytes = 0;
         foreach (var file in files)
         {
             console.Interrupted.ThrowIfCancellationRequested();
-            bytes += AtomicOutput.Write(outDir, file.RelativePath, file.Content);
+            bytes += folder.Write(file.RelativePath, file.Content);
         }
         folder.RequireStillInPlace();
 
@@ -124,11 +119,5 @@ public static class SceneCommand
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  wrote {files.Count} file(s) ({bytes} bytes, {CompiledSceneWriter.BspGfxObjs(report).Count} GfxObj and {report.Cells.Count(c => c.Bsp is not null)} cell BSP dump(s)) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s; times are measurements and vary run to run"));
         return ExitCodes.Ok;
-    }
-
-    private static double Number(string text, string option, string what, double example, Func<double, bool> ok)
-    {
-        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) && double.IsFinite(v) && ok(v)) return v;
-        throw new CliException(ExitCodes.Usage, $"{option}: '{text}' is not {what}: use e.g. {example.ToString(CultureInfo.InvariantCulture)}");
     }
 }

@@ -34,7 +34,7 @@ public static class VerifyCommand
             fixtures, dat, cellDat, jobs,
         };
         command.SetAction(parse => Run(console, parse.GetValue(fixtures)!, parse.GetValue(dat), parse.GetValue(cellDat),
-            SelectionOptions.ParseJobs(parse.GetValue(jobs))));
+            SelectionOptions.WorkersOrAllCores(parse, jobs)));
         return command;
     }
 

@@ -34,7 +34,7 @@ public static partial class ViewCommand
 
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string[]>("--setup") { Description = "a Setup to view, e.g. 0x020019FF (repeat for more)", HelpName = "ID" };
+        var setup = CommonOptions.SetupIds("a Setup to view, e.g. 0x020019FF (repeat for more)");
         var selection = new SelectionOptions();
         var fixtures = new Option<string?>("--fixtures") { Description = "read a folder `dump` or `batch` wrote (shadow files, BSP dumps, scene.json) instead of a dat; with no --setup or --landblock, everything in it", HelpName = "DIR" };
         var compiled = new Option<string?>("--scene") { Description = "read a folder `scene` wrote (compiled-scene.json and its BSP dumps) instead of a dat: the landblock with each object as its chosen model", HelpName = "DIR" };
@@ -50,11 +50,8 @@ public static partial class ViewCommand
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
         {
-            var ids = (parse.GetValue(setup) ?? []).Select(t => ArgumentParsing.SetupId(t)).Distinct().ToArray();
-            uint? landblock = null;
-            if (parse.GetValue(selection.Landblock) is { } text)
-                landblock = LandblockIds.TryParse(text, out var lb) ? lb
-                    : throw new CliException(ExitCodes.Usage, $"--landblock: '{text}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
+            var ids = (parse.GetValue(setup) ?? []).Distinct().ToArray();
+            var landblock = parse.GetValue(selection.Landblock);
             var folder = parse.GetValue(fixtures);
             var sceneFolder = parse.GetValue(compiled);
             if (folder is null && sceneFolder is null && ids.Length == 0 && landblock is null)
@@ -67,7 +64,7 @@ public static partial class ViewCommand
                     throw new CliException(ExitCodes.Usage, "--scene reads only the folder `acshadow scene` wrote: drop --dat and --cell-dat");
                 if (parse.GetValue(scale) is not null || pose.All.Any(o => parse.GetResult(o) is not null))
                     throw new CliException(ExitCodes.Usage, "--scene views the objects at the scale and in the pose they were compiled with: drop --scale, --pose, --state and --motion-table");
-                OutputPaths.RequireNamed(parse.GetValue(outDir)!);
+                OutputFolder.Check(parse.GetValue(outDir)!);
                 var markers = parse.GetValue(chart) is { } dir ? ReadFailures(dir) : [];
                 return Write(console, parse.GetValue(outDir)!, [FromCompiledScene(sceneFolder, landblock, markers)]);
             }
@@ -75,14 +72,14 @@ public static partial class ViewCommand
                 throw new CliException(ExitCodes.Usage, "--fixtures reads only the folder's JSON: drop --dat and --cell-dat");
             if (folder is not null && parse.GetValue(scale) is not null)
                 throw new CliException(ExitCodes.Usage, "--fixtures views the files at the scale they were written with: drop --scale");
-            OutputPaths.RequireNamed(parse.GetValue(outDir)!);
+            OutputFolder.Check(parse.GetValue(outDir)!);
             if (folder is not null && pose.All.Any(o => parse.GetResult(o) is not null))
                 throw new CliException(ExitCodes.Usage, "--fixtures views the files in the pose they were written with: drop --pose, --state and --motion-table");
             var failures = parse.GetValue(chart) is { } chartDir ? ReadFailures(chartDir) : [];
             var scenes = folder is not null
                 ? FromFixtures(console, folder, ids, landblock, failures)
                 : FromDat(console, parse.GetValue(dat), parse.GetValue(selection.CellDat), ids, landblock,
-                    pose.Apply(parse, new ShapeBuildOptions(ShapePolicy.Retail, ArgumentParsing.Scale(parse.GetValue(scale)))), failures);
+                    pose.Apply(parse, new ShapeBuildOptions(ShapePolicy.Retail, parse.GetValue(scale) ?? 1f)), failures);
             return Write(console, parse.GetValue(outDir)!, scenes);
         });
         return command;
@@ -293,25 +290,13 @@ public static partial class ViewCommand
     {
         var files = scenes.SelectMany(s => new[]
         {
-            (Path: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
-            (Path: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
+            (RelativePath: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
+            (RelativePath: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
         }).ToArray();
-        WriteProbe.Prepare(outDir);
-        using (var folder = OutputFolderLock.Acquire(outDir))
+        using (var folder = OutputFolder.Open(outDir))
         {
-            AbandonedTemporaries.Remove(outDir);
-            ForeignFileGuard.Refuse(outDir, files.Select(f => (f.Path, f.Content)));
-            foreach (var (path, content) in files)
-            {
-                console.Interrupted.ThrowIfCancellationRequested();
-                if (UnchangedCheck.IsUnchanged(outDir, path, content.Span))
-                    console.Out.WriteLine($"unchanged {Path.Combine(outDir, path)} ({content.Length} bytes, already these bytes)");
-                else
-                {
-                    AtomicOutput.Write(outDir, path, content);
-                    console.Out.WriteLine($"wrote {Path.Combine(outDir, path)} ({content.Length} bytes)");
-                }
-            }
+            folder.RefuseForeign(files);
+            folder.WriteEach(files, console.Out, console.Interrupted);
             folder.RequireStillInPlace();
         }
         foreach (var s in scenes)

@@ -1,4 +1,3 @@
-using System.Globalization;
 using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
@@ -22,28 +21,18 @@ public static class ArgumentParsing
         return id;
     }
 
-    public static ShapePolicy Policy(string? text)
-    {
-        if (text is null) return ShapePolicy.Retail;
-        if (ShapePolicies.TryParse(text, out var policy)) return policy;
-        throw new CliException(ExitCodes.Usage, $"--policy: '{text}' is not a policy: use retail (the default) or union");
-    }
+    public static ShapePolicy Policy(string text) =>
+        ShapePolicies.TryParse(text, out var policy) ? policy
+            : throw new CliException(ExitCodes.Usage, $"--policy: '{text}' is not a policy: use retail (the default) or union");
 
     /// <summary>
     /// Entity scales acshadow accepts: far beyond any object's in the game either way, and far inside what
     /// float geometry holds (1e-45 makes every coordinate denormal or zero; 1e30 makes a door kilometres of
     /// probes).
     /// </summary>
-    public const float MinScale = 1e-3f, MaxScale = 1e3f;
-
-    public static float Scale(string? text)
+    public static readonly NumberRule<float> Scale = new("a positive number", "use e.g. 1 or 1.5")
     {
-        if (text is null) return 1f;
-        if (!float.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var s) || !float.IsFinite(s) || s <= 0f)
-            throw new CliException(ExitCodes.Usage, $"--scale: '{text}' is not a positive number: use e.g. 1 or 1.5");
-        if (s < MinScale || s > MaxScale)
-            throw new CliException(ExitCodes.Usage, string.Create(CultureInfo.InvariantCulture,
-                $"--scale: {text} is outside {MinScale}-{MaxScale}: no object is scaled that far, and geometry that small or large loses its precision"));
-        return s;
-    }
+        Above = 0f,
+        Limits = (1e-3f, 1e3f, "no object is scaled that far, and geometry that small or large loses its precision"),
+    };
 }

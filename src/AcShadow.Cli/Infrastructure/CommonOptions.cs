@@ -1,4 +1,6 @@
 using System.CommandLine;
+using System.Globalization;
+using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Cli.Infrastructure;
 
@@ -11,17 +13,20 @@ public static class CommonOptions
         HelpName = "PATH",
     };
 
-    public static Option<string?> Policy() => new("--policy")
-    {
-        Description = "retail (default: the retail client's rules) or union (the seed design's builder)",
-        HelpName = "retail|union",
-    };
+    public static Option<ShapePolicy?> Policy() =>
+        ValueOptions.Single("--policy", "retail|union", "retail (default: the retail client's rules) or union (the seed design's builder)", ArgumentParsing.Policy);
 
-    public static Option<string?> Scale() => new("--scale")
-    {
-        Description = "entity scale applied to positions and radii (default 1)",
-        HelpName = "S",
-    };
+    /// <summary>--scale; not given, the entity scale is 1.</summary>
+    public static Option<float?> Scale() =>
+        ArgumentParsing.Scale.Option("--scale", "S", "entity scale applied to positions and radii (default 1)");
+
+    /// <summary>--setup for the commands that take several Setups, one id each time it is given.</summary>
+    public static Option<uint[]> SetupIds(string description) =>
+        ValueOptions.Repeated("--setup", "ID", description, text => ArgumentParsing.SetupId(text));
+
+    /// <summary>A distance in metres (radius, spacing), refused unless positive.</summary>
+    public static NumberRule<float> Metres(float example) =>
+        new("a positive number of metres", $"use e.g. {example.ToString(CultureInfo.InvariantCulture)}") { Above = 0f };
 
     public static Option<string> Out(string defaultValue) => new("--out")
     {

@@ -15,7 +15,7 @@ public sealed class SelectionOptions
     public Option<bool> Doors { get; } = new("--doors") { Description = "every Setup of the built-in door catalog (ACE world database door weenies)" };
     public Option<bool> All { get; } = new("--all") { Description = "every Setup in the dat" };
     public Option<string?> Setups { get; } = new("--setups") { Description = "a file of Setup ids, one a line, '#' comments", HelpName = "FILE" };
-    public Option<string?> Landblock { get; } = new("--landblock") { Description = "a landblock's scene (needs --cell-dat unless the sample is used)", HelpName = "0xXXYY" };
+    public Option<uint?> Landblock { get; } = ValueOptions.Single("--landblock", "0xXXYY", "a landblock's scene (needs --cell-dat unless the sample is used)", ParseLandblock);
     public Option<string?> CellDat { get; } = new("--cell-dat") { Description = "client_cell_1.dat (or its folder) for --landblock", HelpName = "PATH" };
 
     /// <summary>--no-cells for the commands that read a landblock's indoor cells (chart, scene): objects only.</summary>
@@ -29,28 +29,24 @@ public sealed class SelectionOptions
         return selection with { Cells = false };
     }
 
-    public static Option<string?> Jobs() => new("--jobs") { Description = "parallel workers (default: all cores)", HelpName = "N" };
+    /// <summary>--jobs; not given, the command's default (all cores for batch and audit).</summary>
+    public static Option<int?> Jobs(string description = "parallel workers (default: all cores)") =>
+        new NumberRule<int>("a worker count", "use a whole number from 1 to 1024") { From = 1, To = 1024, Styles = NumberStyles.None }
+            .Option("--jobs", "N", description);
 
-    public static int ParseJobs(string? text)
-    {
-        if (text is null) return Environment.ProcessorCount;
-        if (int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out var n) && n is >= 1 and <= 1024) return n;
-        throw new CliException(ExitCodes.Usage, $"--jobs: '{text}' is not a worker count: use a whole number from 1 to 1024");
-    }
+    /// <summary>The worker count --jobs gives, all cores when it is not given.</summary>
+    public static int WorkersOrAllCores(ParseResult parse, Option<int?> jobs) => parse.GetValue(jobs) ?? Environment.ProcessorCount;
+
+    private static uint ParseLandblock(string text) =>
+        LandblockIds.TryParse(text, out var id) ? id
+            : throw new CliException(ExitCodes.Usage, $"--landblock: '{text}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
 
     /// <summary>The selection; with nothing chosen, --all when <paramref name="defaultToAll"/>, else a usage error.</summary>
     public BatchSelection Parse(ParseResult parse, bool defaultToAll)
     {
         SetupList? list = null;
         if (parse.GetValue(Setups) is { } file) list = ReadSetupList(file);
-        uint? landblock = null;
-        if (parse.GetValue(Landblock) is { } lbText)
-        {
-            if (!LandblockIds.TryParse(lbText, out var id))
-                throw new CliException(ExitCodes.Usage, $"--landblock: '{lbText}' is not a landblock: write 0xXXYY, e.g. 0xA9B4");
-            landblock = id;
-        }
-        var selection = new BatchSelection(parse.GetValue(Doors), parse.GetValue(All), list, landblock);
+        var selection = new BatchSelection(parse.GetValue(Doors), parse.GetValue(All), list, parse.GetValue(Landblock));
         if (!selection.IsEmpty) return selection;
         if (defaultToAll) return selection with { All = true };
         throw new CliException(ExitCodes.Usage, "choose what to export: --doors, --all, --setups FILE and/or --landblock 0xXXYY (they combine)");

@@ -44,6 +44,24 @@ public class OutputErrorTests
         Assert.Equal(["taken"], dir.Files());
     }
 
+    [Theory]
+    [InlineData("dump", "--setup", "0x0200FFFF")]
+    [InlineData("batch", "--landblock", "0x0101")]
+    [InlineData("chart", "--setup", "0x0200FFFF")]
+    [InlineData("scene", "--landblock", "0x0101")]
+    [InlineData("view", "--setup", "0x0200FFFF")]
+    public void Every_folder_writer_refuses_a_file_as_out_before_reading_the_dat(string command, string option, string missing)
+    {
+        using var dir = new TempDir();
+        var file = Path.Combine(dir.Path, "taken");
+        File.WriteAllText(file, "x");
+        // The object is not in the dat (exit 4 once the dat is read): the --out is found wrong first.
+        var run = CliRun.Of(command, option, missing, "--out", file);
+        Assert.Equal(6, run.ExitCode);
+        Assert.Equal($"acshadow: --out: {file} is a file: pass a folder (it is created when missing)", Assert.Single(run.ErrorLines));
+        Assert.Equal(["taken"], dir.Files());
+    }
+
     [Fact]
     public void An_output_folder_without_write_permission_is_exit_6_before_any_work_is_written()
     {
