@@ -1,33 +1,27 @@
+using System.Buffers.Binary;
 using System.Runtime.InteropServices;
 using System.Text;
+using Microsoft.Win32.SafeHandles;
 
 namespace AcShadow.Files;
 
 /// <summary>
 /// Tells a regular file from a device, a FIFO, a socket or a link before anything opens it: opening a FIFO
 /// waits for a writer, and replacing a device by rename replaces the device. .NET's file API does not say
-/// what kind of file a path names, so on Unix this asks the runtime's own native layer (the stat the BCL
-/// itself uses, whose mode carries the POSIX file type bits).
+/// what kind of file a path names, so on Linux this asks the kernel through libc's <c>statx(2)</c>, whose
+/// <c>struct statx</c> has one documented layout on every architecture (linux/stat.h). Where libc has no
+/// statx (macOS, an old libc) the kinds .NET can tell are told and the rest are <see cref="FileKind.Unknown"/>.
 /// </summary>
 public static class FileKinds
 {
     /// <summary>What <paramref name="path"/> names; with <paramref name="followLinks"/>, what a final symbolic link points at.</summary>
     public static FileKind Of(string path, bool followLinks = false)
     {
-        if (OperatingSystem.IsWindows()) return OfWindows(path, followLinks);
-        var status = new byte[StatusBytes];
-        var name = Encoding.UTF8.GetBytes(path + "\0");
-        int result;
-        try
-        {
-            result = followLinks ? Stat(ref name[0], ref status[0]) : LStat(ref name[0], ref status[0]);
-        }
-        catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
-        {
-            return File.Exists(path) ? FileKind.Unknown : Directory.Exists(path) ? FileKind.Folder : FileKind.Missing;
-        }
-        if (result != 0) return FileKind.Missing;
-        return (BitConverter.ToInt32(status, ModeOffset) & TypeMask) switch
+        if (OperatingSystem.IsWindows()) return OfDotNet(path, followLinks);
+        var status = new byte[Statx.Size];
+        if (Statx.OfPath(path, followLinks, status) is not { } found) return OfDotNet(path, followLinks);
+        if (!found) return FileKind.Missing;
+        return (BinaryPrimitives.ReadUInt16LittleEndian(status.AsSpan(Statx.ModeOffset)) & TypeMask) switch
         {
             0x8000 => FileKind.Regular,
             0x4000 => FileKind.Folder,
@@ -54,71 +48,96 @@ public static class FileKinds
         _ => "a special file",
     };
 
-    private static FileKind OfWindows(string path, bool followLinks)
-    {
-        FileSystemInfo info = Directory.Exists(path) ? new DirectoryInfo(path) : new FileInfo(path);
-        if (!info.Exists) return FileKind.Missing;
-        if (info.LinkTarget is not null)
-        {
-            if (!followLinks) return FileKind.SymbolicLink;
-            var target = info.ResolveLinkTarget(returnFinalTarget: true);
-            return target is null || !target.Exists ? FileKind.Missing : target is DirectoryInfo ? FileKind.Folder : FileKind.Regular;
-        }
-        return info is DirectoryInfo ? FileKind.Folder : FileKind.Regular;
-    }
-
-    // The runtime's FileStatus: int32 Flags, int32 Mode (S_IFMT bits as POSIX spells them), then sizes and
-    // times; a generous buffer covers every version's tail.
-    private const int StatusBytes = 256;
-    private const int ModeOffset = 4;
-    private const int TypeMask = 0xF000;
-
     /// <summary>
-    /// Bytes that differ between two files and not between two looks at one file: the device and inode
-    /// numbers (and the fields beside them that do not change); null when the path names nothing or the
-    /// platform cannot say.
+    /// The device and inode numbers of what <paramref name="path"/> names (a final link followed): they
+    /// differ between two files and not between two looks at one file. Null when the path names nothing or
+    /// the platform cannot say.
     /// </summary>
     public static byte[]? Identity(string path)
     {
         if (OperatingSystem.IsWindows()) return null;
-        var status = new byte[StatusBytes];
-        var name = Encoding.UTF8.GetBytes(path + "\0");
-        try
-        {
-            return Stat(ref name[0], ref status[0]) == 0 ? status[IdentityStart..IdentityEnd] : null;
-        }
-        catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
-        {
-            return null;
-        }
+        var status = new byte[Statx.Size];
+        return Statx.OfPath(path, followLinks: true, status) == true ? IdentityOf(status) : null;
     }
 
     /// <summary>As <see cref="Identity(string)"/>, for an open file.</summary>
-    public static byte[]? Identity(Microsoft.Win32.SafeHandles.SafeFileHandle handle)
+    public static byte[]? Identity(SafeFileHandle handle)
     {
         if (OperatingSystem.IsWindows()) return null;
-        var status = new byte[StatusBytes];
-        try
-        {
-            return FStat(handle.DangerousGetHandle(), ref status[0]) == 0 ? status[IdentityStart..IdentityEnd] : null;
-        }
-        catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
-        {
-            return null;
-        }
+        var status = new byte[Statx.Size];
+        return Statx.OfHandle(handle, status) ? IdentityOf(status) : null;
     }
 
-    // After the mode, owner, size and eight time fields (88 bytes) come the device, the inode (with the
-    // device a special file stands for between them in newer runtimes) and user flags: times are left out,
-    // since reading a file changes its access time.
-    private const int IdentityStart = 88, IdentityEnd = 120;
+    private const int TypeMask = 0xF000;
 
-    [DllImport("libSystem.Native", EntryPoint = "SystemNative_FStat", SetLastError = true)]
-    private static extern int FStat(nint fd, ref byte status);
+    private static byte[] IdentityOf(byte[] status) =>
+        [.. status.AsSpan(Statx.InodeOffset, 8), .. status.AsSpan(Statx.DeviceOffset, 8)];
 
-    [DllImport("libSystem.Native", EntryPoint = "SystemNative_LStat", SetLastError = true)]
-    private static extern int LStat(ref byte path, ref byte status);
+    /// <summary>What .NET's own API can tell: links, folders and files (a device, FIFO or socket is "a file" to it).</summary>
+    private static FileKind OfDotNet(string path, bool followLinks)
+    {
+        FileSystemInfo info = Directory.Exists(path) ? new DirectoryInfo(path) : new FileInfo(path);
+        if (info.LinkTarget is not null)
+        {
+            if (!followLinks) return FileKind.SymbolicLink;
+            var target = info.ResolveLinkTarget(returnFinalTarget: true);
+            return target is null || !target.Exists ? FileKind.Missing : target is DirectoryInfo ? FileKind.Folder : KindOfFile(target);
+        }
+        if (!info.Exists) return FileKind.Missing;
+        return info is DirectoryInfo ? FileKind.Folder : KindOfFile(info);
+    }
 
-    [DllImport("libSystem.Native", EntryPoint = "SystemNative_Stat", SetLastError = true)]
-    private static extern int Stat(ref byte path, ref byte status);
+    // Only Windows tells a regular file apart in its attributes; elsewhere this fallback cannot.
+    private static FileKind KindOfFile(FileSystemInfo info) => OperatingSystem.IsWindows() ? FileKind.Regular : FileKind.Unknown;
+
+    /// <summary>
+    /// statx(2) through libc. Offsets are those of <c>struct statx</c> in linux/stat.h, the same on every
+    /// architecture: stx_mode (u16) at 28, stx_ino (u64) at 32, stx_dev_major and stx_dev_minor (u32) at 136.
+    /// </summary>
+    private static class Statx
+    {
+        public const int Size = 256;
+        public const int ModeOffset = 28, InodeOffset = 32, DeviceOffset = 136;
+
+        private const int AtFdCwd = -100;
+        private const int AtSymlinkNoFollow = 0x100, AtEmptyPath = 0x1000;
+        private const uint TypeAndInode = 0x1 | 0x100; // STATX_TYPE | STATX_INO; the device numbers always come
+
+        /// <summary>True: found and filled; false: nothing there (or not reachable); null: this libc has no statx.</summary>
+        public static bool? OfPath(string path, bool followLinks, byte[] status)
+        {
+            var name = Encoding.UTF8.GetBytes(path + "\0");
+            try
+            {
+                return Call(AtFdCwd, ref name[0], followLinks ? 0 : AtSymlinkNoFollow, TypeAndInode, ref status[0]) == 0;
+            }
+            catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
+            {
+                return null;
+            }
+        }
+
+        /// <summary>An open file's status: the empty path names the descriptor itself (AT_EMPTY_PATH).</summary>
+        public static bool OfHandle(SafeFileHandle handle, byte[] status)
+        {
+            var empty = new byte[1];
+            var added = false;
+            try
+            {
+                handle.DangerousAddRef(ref added);
+                return Call((int)handle.DangerousGetHandle(), ref empty[0], AtEmptyPath, TypeAndInode, ref status[0]) == 0;
+            }
+            catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
+            {
+                return false;
+            }
+            finally
+            {
+                if (added) handle.DangerousRelease();
+            }
+        }
+
+        [DllImport("libc", EntryPoint = "statx", SetLastError = true)]
+        private static extern int Call(int dirFd, ref byte path, int flags, uint mask, ref byte status);
+    }
 }

@@ -101,7 +101,7 @@ public sealed class FolderLock : IDisposable
         // on the file, and two runs in one process would not exclude each other; flock belongs to this handle.
         try
         {
-            return FLock(stream.SafeFileHandle.DangerousGetHandle(), LockExclusive | LockNonBlocking) == 0;
+            return FLock((int)stream.SafeFileHandle.DangerousGetHandle(), LockExclusive | LockNonBlocking) == 0;
         }
         catch (Exception e) when (e is DllNotFoundException or EntryPointNotFoundException)
         {
@@ -109,8 +109,9 @@ public sealed class FolderLock : IDisposable
         }
     }
 
+    // LOCK_EX and LOCK_NB of flock(2), the same values on Linux and the BSDs.
     private const int LockExclusive = 2, LockNonBlocking = 4;
 
-    [DllImport("libSystem.Native", EntryPoint = "SystemNative_FLock", SetLastError = true)]
-    private static extern int FLock(nint fd, int operation);
+    [DllImport("libc", EntryPoint = "flock", SetLastError = true)]
+    private static extern int FLock(int fd, int operation);
 }

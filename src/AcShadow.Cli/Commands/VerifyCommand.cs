@@ -20,8 +20,12 @@ public static class VerifyCommand
     /// <summary>At most this many JSON differences are printed per file.</summary>
     public const int MaxDifferencesShown = 20;
 
-    /// <summary>The folders batch writes; files in them that regeneration does not produce are "extra".</summary>
-    private static readonly string[] OutputFolders = ["setups", "gfxobjs"];
+    /// <summary>
+    /// The folders batch writes, as the file formats place their files (setups/, gfxobjs/, cells/): files in
+    /// them that regeneration does not produce are "extra".
+    /// </summary>
+    private static readonly string[] OutputFolders =
+        [.. FileFormats.All.Select(f => f.PathPattern).Where(p => p.Contains('/')).Select(p => p[..p.IndexOf('/')]).Distinct()];
 
     public static Command Create(CliConsole console)
     {

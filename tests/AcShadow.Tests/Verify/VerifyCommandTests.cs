@@ -53,6 +53,23 @@ public class VerifyCommandTests
     }
 
     [Fact]
+    public void A_stale_or_missing_cell_file_is_drift()
+    {
+        using var dir = Fixtures("--landblock", "0xA9B4");
+        var cells = Path.Combine(dir.Path, "cells");
+        var written = Directory.GetFiles(cells, "*.cell.json").Order(StringComparer.Ordinal).ToArray();
+        Assert.NotEmpty(written);
+        // A cell a previous run wrote (or a `--no-cells` re-run left behind) that regeneration does not give.
+        File.WriteAllText(Path.Combine(cells, "0xA9B401FF.cell.json"), "{}\n");
+        File.Delete(written[0]);
+        var run = CliRun.Of("verify", "--fixtures", dir.Path);
+        Assert.Equal(5, run.ExitCode);
+        Assert.Contains("extra cells/0xA9B401FF.cell.json", run.Out);
+        Assert.Contains($"missing cells/{Path.GetFileName(written[0])}", run.Out);
+        Assert.Contains("0 changed, 1 missing, 1 extra", Assert.Single(run.ErrorLines, l => !l.Contains("SYNTHETIC")));
+    }
+
+    [Fact]
     public void A_different_dat_is_drift_even_when_the_files_agree()
     {
         using var dats = SampleDat.WriteToTempFolder();
