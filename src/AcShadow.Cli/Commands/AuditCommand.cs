@@ -51,10 +51,9 @@ public static class AuditCommand
     private static int Run(CliConsole console, Core.Batch.BatchSelection selection, string? datPath, string? cellPath,
         AuditQuery query, AuditFormat format, string? output, int jobs, bool chart, Core.Shapes.ShapeBuildOptions pose)
     {
-        if (output is not null) OutputPaths.RequireNamed(output);
-        if (output is not null && Directory.Exists(output))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {output} is a folder: pass a file name, e.g. audit.csv");
+        if (output is not null) ExplicitOutputFile.Check(output, "audit.csv");
         using var dat = DatLocator.Open(datPath, cellPath, console);
+        if (output is not null) ExplicitOutputFile.RefuseInput(output, dat, "audit.csv");
         var plan = SelectionOptions.Plan(selection, dat);
         var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet: !chart, "setups charted", "audit");
         AuditReport report;

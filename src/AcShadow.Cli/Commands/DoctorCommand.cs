@@ -16,6 +16,8 @@ namespace AcShadow.Cli.Commands;
 /// </summary>
 public static class DoctorCommand
 {
+    private const string Example = "doctor.json";
+
     public static Command Create(CliConsole console)
     {
         var dat = CommonOptions.Dat();
@@ -33,15 +35,14 @@ public static class DoctorCommand
 
     private static int Run(CliConsole console, string? datPath, string? cellPath, string? output, int jobs)
     {
-        if (output is not null) OutputPaths.RequireNamed(output);
-        if (output is not null && Directory.Exists(output))
-            throw new CliException(ExitCodes.OutputFailed, $"--out: {output} is a folder: pass a file name, e.g. doctor.json");
+        if (output is not null) ExplicitOutputFile.Check(output, Example);
         using var dat = DatLocator.Open(datPath, cellPath, console);
+        if (output is not null) ExplicitOutputFile.RefuseInput(output, dat, Example);
         var options = new DoctorOptions(jobs, ToolVersion(), PeakMemory);
         var report = DoctorRunner.Run(dat.Portal.Archive, dat.Cell?.Archive, options);
         console.Out.Write(DoctorReportWriter.Summary(report, dat.IsSample ? "the built-in synthetic sample" : "your dat"));
         if (output is null) return ExitCodes.Ok;
-        ExplicitOutputFile.Write(output, DoctorReportWriter.Json(report), "doctor.json");
+        ExplicitOutputFile.Write(output, DoctorReportWriter.Json(report), Example);
         console.Out.WriteLine($"wrote {output} ({FileFormats.Doctor.Format}: ids, counts, hashes and verdicts only)");
         return ExitCodes.Ok;
     }

@@ -24,6 +24,9 @@ public sealed class DatFileWatch
         _identity = FileKinds.Identity(stream.SafeFileHandle);
     }
 
+    /// <summary>Whether <paramref name="identity"/> (<see cref="FileKinds.Identity(string)"/>) is this dat file's.</summary>
+    public bool Is(byte[] identity) => _identity is not null && identity.AsSpan().SequenceEqual(_identity);
+
     /// <summary>How the file changed since it was opened, or null when it did not.</summary>
     public string? Change()
     {

@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat;
+using AcShadow.Files;
 
 namespace AcShadow.Cli.Infrastructure;
 
@@ -21,6 +22,10 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
                 throw new CliException(ExitCodes.DatUnreadable,
                     $"the dat changed while this run read it: {change}; nothing read after the change can be trusted: run again once the dat is complete");
     }
+
+    /// <summary>Whether <paramref name="path"/> names (through any link) a dat file this run reads.</summary>
+    public bool Reads(string path) =>
+        FileKinds.Identity(path) is { } identity && (watches ?? []).Any(w => w.Is(identity));
 
     public void Dispose()
     {

@@ -11,6 +11,24 @@ namespace AcShadow.Cli.Output;
 /// </summary>
 public static class ExplicitOutputFile
 {
+    /// <summary>Before the dat is read: the path names a file, not a folder.</summary>
+    public static void Check(string path, string example)
+    {
+        OutputPaths.RequireNamed(path);
+        if (Directory.Exists(path))
+            throw new CliException(ExitCodes.OutputFailed, $"--out: {path} is a folder: pass a file name, e.g. {example}");
+    }
+
+    /// <summary>
+    /// Once the dats are open: the path is none of them (by device and inode, so a link or another spelling
+    /// of the path counts). A proprietary dat replaced by a report cannot be had back.
+    /// </summary>
+    public static void RefuseInput(string path, OpenedDat dat, string example)
+    {
+        if (dat.Reads(path))
+            throw new CliException(ExitCodes.OutputFailed, $"--out: {path} is a dat this run reads: acshadow never writes over its input; pass another file name, e.g. {example}");
+    }
+
     public static void Write(string path, byte[] content, string example = "audit.csv")
     {
         OutputPaths.RequireNamed(path);
