@@ -24,10 +24,10 @@ public sealed record ChartProbes(Probe[] Probes, float GridSpacing, Bounds Bound
         {
             // Said with the size that forced it: a span of 1e38 m is a corrupt sphere or vertex, not a big object.
             var size = grid.Region.Size;
-            notes.Add(FormattableString.Invariant($"grid-coarsened: grid coarsened from {options.Spacing} m to {grid.Spacing:G6} m to stay under {options.MaxGridProbes} probes: the shapes span {size.X:G6} × {size.Y:G6} × {size.Z:G6} m"));
+            notes.Add(FormattableString.Invariant($"{ChartDiagnosticCodes.GridCoarsened}: grid coarsened from {options.Spacing} m to {grid.Spacing:G6} m to stay under {options.MaxGridProbes} probes: the shapes span {size.X:G6} × {size.Y:G6} × {size.Z:G6} m"));
         }
         if (stability.SpacingFactor > 1f)
-            notes.Add(FormattableString.Invariant($"stability-coarsened: stability probes laid every {options.Spacing * stability.SpacingFactor:G6} m instead of {options.Spacing} m on faces and edges to stay under {options.MaxStabilityProbes} probes (a large object, one of very many polygons, or a part scaled far past any real object's size); every vertex, face centroid and splitting plane is still probed"));
+            notes.Add(FormattableString.Invariant($"{ChartDiagnosticCodes.StabilityCoarsened}: stability probes laid every {options.Spacing * stability.SpacingFactor:G6} m instead of {options.Spacing} m on faces and edges to stay under {options.MaxStabilityProbes} probes (a large object, one of very many polygons, or a part scaled far past any real object's size); every vertex, face centroid and splitting plane is still probed"));
         return new ChartProbes(probes, grid.Spacing, everything, opening, notes);
     }
 

@@ -14,7 +14,8 @@ namespace AcShadow.Analysis.Chart;
 /// </summary>
 public static class ChartRunner
 {
-    public const string ModelFailed = "model-failed";
+    /// <summary>The code of a model that failed to prepare an object (<see cref="ChartDiagnosticCodes.ModelFailed"/>).</summary>
+    public const string ModelFailed = ChartDiagnosticCodes.ModelFailed;
 
     /// <summary>
     /// Charts <paramref name="count"/> subjects, made one at a time by <paramref name="subjectAt"/> (null: skipped),
@@ -137,7 +138,7 @@ public static class ChartRunner
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // A model that cannot prepare blocks nothing; the chart goes on and says why.
-            return new PreparedModel(new NothingCollides(), [], [new Diagnostic(ModelFailed, $"{model.Name} could not prepare Setup 0x{subject.Setup.Id:X8}: {e.Message}")]);
+            return new PreparedModel(new NothingCollides(), [], [new Diagnostic(ChartDiagnosticCodes.ModelFailed, $"{model.Name} could not prepare Setup 0x{subject.Setup.Id:X8}: {e.Message}")]);
         }
     }
 

@@ -35,6 +35,13 @@ public sealed record ObjectCompilation(
 {
     public const string Nothing = "none";
 
+    /// <summary>
+    /// What the tables and the summary show in the model column of an object or cell nothing was compiled for.
+    /// A display label, not a diagnostic code: it reads like <c>ExportDiagnosticCodes.Unresolved</c>, the
+    /// diagnostic that says why.
+    /// </summary>
+    public const string UnresolvedLabel = "unresolved";
+
     /// <summary>Counted operations per query (<see cref="QueryCost"/>) of the chosen model and of retail over the probes' sample.</summary>
     public double ChosenOps { get; init; }
     public double RetailOps { get; init; }

@@ -41,7 +41,7 @@ public static class SceneChartSvg
             var placed = objects[k];
             var c = report.For(placed);
             var y = 250 + k * Row;
-            svg.Text(20, y + 12, $"#{I(placed.Index)} {JsonIds.Format(placed.Id)} → {c?.Model ?? "unresolved"}", 12, "start", "normal", ModelColour(c?.Model));
+            svg.Text(20, y + 12, $"#{I(placed.Index)} {JsonIds.Format(placed.Id)} → {c?.Model ?? ObjectCompilation.UnresolvedLabel}", 12, "start", "normal", ModelColour(c?.Model));
             if (c is null || c.Probes.Length == 0) continue;
             svg.Rect(Left, y + 2, X(c.RetailTiming.MedianNs, perObject) - Left, 8, ChartPalette.AgreeBlocked, title: $"retail {Time(c.RetailTiming.MedianNs)}");
             svg.Rect(Left, y + 11, X(c.ChosenTiming.MedianNs, perObject) - Left, 8, ModelColour(c.Model), title: $"{c.Model} {Time(c.ChosenTiming.MedianNs)}");
@@ -51,7 +51,7 @@ public static class SceneChartSvg
         {
             var cell = report.Cells[k];
             var y = 250 + (objects.Length + k) * Row;
-            svg.Text(20, y + 12, $"cell {JsonIds.Format(cell.Cell.Id)} → {(cell.Bsp is null ? "unresolved" : CellCompilation.Model)}", 12, "start", "normal", ModelColour(cell.Bsp is null ? null : CellCompilation.Model));
+            svg.Text(20, y + 12, $"cell {JsonIds.Format(cell.Cell.Id)} → {(cell.Bsp is null ? ObjectCompilation.UnresolvedLabel : CellCompilation.Model)}", 12, "start", "normal", ModelColour(cell.Bsp is null ? null : CellCompilation.Model));
             if (cell.Bsp is not null)
                 svg.Text(Left, y + 12, $"kept as retail: a room a mover stands inside, which every cheaper (solid) model would fill; {I(cell.Bsp.Polygons.Length)} polygons, {I(cell.Probes.Length)} probes", 10.5);
         }

@@ -1,3 +1,4 @@
+using AcShadow.Core.Export;
 using System.Numerics;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
@@ -57,12 +58,12 @@ public static class SceneCompiler
         var frame = new PartPose(cell.Position.Origin, Normalised(cell.Position.Orientation), 1f);
         var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
         if (geometry is null)
-            return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
+            return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
         var physics = geometry.Physics with { GfxObjId = cell.Id };
-        var diagnostics = physics.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToList();
+        var diagnostics = physics.Diagnostics.Select(d => new Diagnostic(ExportDiagnosticCodes.BspGeometry, d)).ToList();
         if (!(float.IsFinite(cell.Position.Origin.X) && float.IsFinite(cell.Position.Origin.Y) && float.IsFinite(cell.Position.Origin.Z)) || !float.IsFinite(cell.Position.Orientation.Length()) || cell.Position.Orientation.Length() < 1e-6f)
         {
-            diagnostics.Add(new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
+            diagnostics.Add(new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
             return new CellCompilation(cell, physics, null, frame, [], Bounds.Empty, diagnostics);
         }
         var bsp = CompiledBsp.Compile(physics);
@@ -90,7 +91,7 @@ public static class SceneCompiler
             (subject, why) = (null, $"unreadable: {e.Message}");
         }
         if (subject is null)
-            return Unresolved(kind, id, null, [new Diagnostic("unresolved", $"{JsonIds.Format(id)}: {why}")]);
+            return Unresolved(kind, id, null, [new Diagnostic(ExportDiagnosticCodes.Unresolved, $"{JsonIds.Format(id)}: {why}")]);
         return Compile(subject, kind, options, timer);
     }
 

@@ -109,7 +109,7 @@ public static class SceneCommand
         var w = console.Out;
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"scene {LandblockIds.Short(scene.LandBlockInfoId)} from {dat.Description}: {placed.Count} placed object(s), {distinct} distinct, {scene.Cells.Count} indoor cell(s) kept as retail, mover radius {string.Join(", ", options.Chart.Radii.Select(r => r.ToString(CultureInfo.InvariantCulture) + " m"))}, tolerance {options.TolerancePercent} %"));
-        foreach (var group in placed.Select(p => p.Object).GroupBy(o => report.For(o)?.Model ?? "unresolved").OrderBy(g => g.Key, StringComparer.Ordinal))
+        foreach (var group in placed.Select(p => p.Object).GroupBy(o => report.For(o)?.Model ?? ObjectCompilation.UnresolvedLabel).OrderBy(g => g.Key, StringComparer.Ordinal))
             w.WriteLine($"  {group.Key,-18} {group.Count(),4} object(s): {string.Join(' ', group.Select(o => JsonIds.Format(o.Id)).Distinct().Take(8))}{(group.Select(o => o.Id).Distinct().Count() > 8 ? " ..." : "")}");
         var probes = report.Probes();
         w.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  probes checked: {probes.Total} ({probes})"));

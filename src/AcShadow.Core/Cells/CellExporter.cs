@@ -33,18 +33,18 @@ public sealed class CellExporter(ExportEngine engine)
         if (geometry is null)
         {
             var reason = $"EnvCell {JsonIds.Format(cell.Id)}: {problem}";
-            return new CellExport(cell.Id, null, [], [], [new SkippedItem(cell.Id, reason, SelectionSource.Landblock)], [new Diagnostic("unresolved", reason)], cell.StaticObjects.Count);
+            return new CellExport(cell.Id, null, [], [], [new SkippedItem(cell.Id, reason, SelectionSource.Landblock)], [new Diagnostic(ExportDiagnosticCodes.Unresolved, reason)], cell.StaticObjects.Count);
         }
 
         var physics = geometry.Physics with { GfxObjId = cell.Id };
-        diagnostics.AddRange(physics.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)));
+        diagnostics.AddRange(physics.Diagnostics.Select(d => new Diagnostic(ExportDiagnosticCodes.BspGeometry, d)));
         var portals = new JsonArr();
         var portalRecords = new List<CellPortalRecord>(cell.Portals.Count);
         for (var i = 0; i < cell.Portals.Count; i++)
         {
             var portal = cell.Portals[i];
             var (vertices, plane, portalProblem) = geometry.Portal(portal.PolygonId);
-            if (portalProblem is not null) diagnostics.Add(new Diagnostic("portal-polygon", $"EnvCell {JsonIds.Format(cell.Id)} portal {i}: {portalProblem}"));
+            if (portalProblem is not null) diagnostics.Add(new Diagnostic(ExportDiagnosticCodes.PortalPolygon, $"EnvCell {JsonIds.Format(cell.Id)} portal {i}: {portalProblem}"));
             portalRecords.Add(new CellPortalRecord(i, (ushort)portal.Flags, portal.PolygonId, cell.Sibling(portal.OtherCellId), portal.OtherPortalId, vertices, plane));
             portals.Add(new JsonObj()
                 .Add("index", i)

@@ -68,7 +68,7 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
         if (dump is null) return new BspDumpResult(null, null, [], []);
         var path = FileFormats.Bsp.PathFor(id);
         OutputFile Acdream() => AcdreamGfxObjWriter.File(id, dump);
-        var diagnostics = dump.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToArray();
+        var diagnostics = dump.Diagnostics.Select(d => new Diagnostic(ExportDiagnosticCodes.BspGeometry, d)).ToArray();
         if (bspSink is null)
             return new BspDumpResult(new OutputFile(path, FixtureKind.Bsp, id, BspFileWriter.Write(dump), 0, dump.Polygons.Count) { Acdream = Acdream },
                 path, [], diagnostics);

@@ -98,13 +98,13 @@ public static class SceneExporter
                 file = shadowPath;
                 break;
             case SceneObjectKind.Setup:
-                diagnostics.Add(new("unresolved", $"Setup {JsonIds.Format(placed.Id)}: {setupProblems.GetValueOrDefault(placed.Id, SkippedItem.NotInDat)}"));
+                diagnostics.Add(new(ExportDiagnosticCodes.Unresolved, $"Setup {JsonIds.Format(placed.Id)}: {setupProblems.GetValueOrDefault(placed.Id, SkippedItem.NotInDat)}"));
                 break;
             case SceneObjectKind.GfxObj:
                 (file, shapes) = DescribeGfxObj(placed.Id, engine, bspFiles, skipped, diagnostics);
                 break;
             default:
-                diagnostics.Add(new("unresolved", $"id {JsonIds.Format(placed.Id)} is neither a Setup ({DatObjectKind.Setup.RangeText()}) nor a GfxObj ({DatObjectKind.GfxObj.RangeText()})"));
+                diagnostics.Add(new(ExportDiagnosticCodes.Unresolved, $"id {JsonIds.Format(placed.Id)} is neither a Setup ({DatObjectKind.Setup.RangeText()}) nor a GfxObj ({DatObjectKind.GfxObj.RangeText()})"));
                 break;
         }
         json.Add("file", file);
@@ -138,7 +138,7 @@ public static class SceneExporter
         if (gfx is null)
         {
             skipped[id] = new SkippedItem(id, SkippedItem.NotInDat, SelectionSource.Landblock);
-            diagnostics.Add(new("unresolved", $"GfxObj {JsonIds.Format(id)}: {SkippedItem.NotInDat}"));
+            diagnostics.Add(new(ExportDiagnosticCodes.Unresolved, $"GfxObj {JsonIds.Format(id)}: {SkippedItem.NotInDat}"));
             return (null, null);
         }
         var set = BareGfxObjShape.Build(gfx, engine.Dat.ReadGfxObj, engine.Options);

@@ -1,4 +1,5 @@
 using System.Text;
+using AcShadow.Analysis.Compile;
 using AcShadow.Analysis.Chart.Output;
 using static AcShadow.Analysis.Chart.Output.ChartFormat;
 
@@ -28,7 +29,7 @@ public static class CellsCsv
             var blocked = c.Blocked;
             csv.Append(string.Join(',',
                 Id(c.Cell.Cell.Id), Id(c.Cell.Cell.EnvironmentFileId), I(c.Cell.Cell.CellStructure), I(c.Cell.Bsp?.Polygons.Length ?? 0),
-                c.Cell.Bsp is null ? "unresolved" : CellChart.Model, I(counts.Total), I(counts.Of(ProbeKind.Grid)),
+                c.Cell.Bsp is null ? ObjectCompilation.UnresolvedLabel : CellChart.Model, I(counts.Total), I(counts.Of(ProbeKind.Grid)),
                 I(counts.Of(ProbeKind.Face)), I(counts.Of(ProbeKind.Edge)), I(counts.Of(ProbeKind.Vertex)), I(counts.Of(ProbeKind.SplittingPlane)),
                 I(blocked), I(c.Answers.Length - blocked), F(c.Timing.MedianNs, 1), F(c.Timing.P10Ns, 1), F(c.Timing.P90Ns, 1), I(c.Cell.Diagnostics.Count)));
             csv.Append('\n');

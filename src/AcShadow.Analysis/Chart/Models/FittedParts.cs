@@ -14,8 +14,6 @@ namespace AcShadow.Analysis.Chart.Models;
 /// </summary>
 internal static class FittedParts
 {
-    public const string Unfittable = "unfittable-part";
-
     /// <summary><paramref name="fit"/> gives the part's solid (its query, and the box when it is one) from its vertices and its polygons' planes.</summary>
     public static PreparedModel Prepare(ChartSubject subject, string what,
         Func<IReadOnlyList<Vector3>, IReadOnlyList<Plane>, (ISphereOverlap Query, OrientedBox? Box, ConvexPolytope Polytope)?> fit)
@@ -32,7 +30,7 @@ internal static class FittedParts
             var planes = polygons.Select(p => new Plane(p.Normal, p.D)).ToArray();
             if (fit(vertices, planes) is not { } solid)
             {
-                diagnostics.Add(new Diagnostic(Unfittable, $"{part.Name}: its {vertices.Length} physics vertices give no solid for {what} (all on a line or in a point, or a hull float rounding cannot settle); left out"));
+                diagnostics.Add(new Diagnostic(ModelDiagnosticCodes.UnfittablePart, $"{part.Name}: its {vertices.Length} physics vertices give no solid for {what} (all on a line or in a point, or a hull float rounding cannot settle); left out"));
                 continue;
             }
             queries.Add(new PosedQuery(part.Pose, solid.Query));

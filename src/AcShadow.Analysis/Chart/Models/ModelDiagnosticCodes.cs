@@ -1,0 +1,8 @@
+namespace AcShadow.Analysis.Chart.Models;
+
+/// <summary>The codes of the diagnostics a chart model adds when it prepares an object, stable for consumers that filter on them.</summary>
+public static class ModelDiagnosticCodes
+{
+    /// <summary>A BSP part whose physics vertices give no solid for a fitted model (all on a line or in a point): that model leaves it out.</summary>
+    public const string UnfittablePart = "unfittable-part";
+}
