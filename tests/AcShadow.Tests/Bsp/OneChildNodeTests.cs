@@ -2,6 +2,7 @@ using System.Numerics;
 using System.Text.Json;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Core.Export;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Tests.Errors;
@@ -64,7 +65,7 @@ public class OneChildNodeTests
         var run = CliRun.Of("dump", "--setup", $"0x{SetupId:X8}", "--dat", dats.Path, "--out", output.Path);
 
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains(run.ErrorLines, l => l.Contains("warning") && l.Contains("BSP node 0 has no positive child"));
+        Assert.Contains(run.ErrorLines, l => l.StartsWith($"warning: 0x{SetupId:X8}: {ExportDiagnosticCodes.BspGeometry}: ", StringComparison.Ordinal) && l.Contains("BSP node 0 has no positive child"));
         using var bsp = JsonDocument.Parse(File.ReadAllText(Path.Combine(output.Path, $"gfxobjs/0x{Gfx:X8}.bsp.json")));
         var diagnostics = bsp.RootElement.GetProperty("diagnostics").EnumerateArray().Select(d => d.GetString()).ToArray();
         Assert.Contains(diagnostics, d => d!.Contains("BSP node 0 has no positive child: retail's solid query would fail here"));

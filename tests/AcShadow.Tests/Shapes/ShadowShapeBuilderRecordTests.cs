@@ -87,6 +87,28 @@ public class ShadowShapeBuilderRecordTests
     }
 
     [Fact]
+    public void A_placement_with_a_frame_count_other_than_the_part_count_is_diagnosed()
+    {
+        // A dat stores one frame per part, so only an in-memory source can hand over another count.
+        var shortFrame = ShadowShapeBuilder.Build(Setup(0x02000001, [A.Id, B.Id, A.Id], [PlacementAt(Placement.Resting, new(1, 0, 0), new(2, 0, 0))]),
+            Lookup(A, B), new(ShapePolicy.Retail));
+        var longFrame = ShadowShapeBuilder.Build(Setup(0x02000001, [A.Id], [PlacementAt(Placement.Resting, new(1, 0, 0), new(2, 0, 0))]),
+            Lookup(A), new(ShapePolicy.Retail));
+        Assert.Contains(shortFrame.Diagnostics, d => d.Code == DiagnosticCodes.FrameCount && d.Message.Contains("2 frame(s) for 3 part(s): parts past the last frame get no pose"));
+        Assert.Contains(longFrame.Diagnostics, d => d.Code == DiagnosticCodes.FrameCount && d.Message.Contains("2 frame(s) for 1 part(s): the extra frames are ignored"));
+        Assert.Equal(1f, Assert.Single(longFrame.Shapes).LocalPosition.X);
+    }
+
+    [Fact]
+    public void A_default_scale_count_other_than_the_part_count_is_ignored_and_said()
+    {
+        var setup = Setup(0x02000005, [A.Id, B.Id], [PlacementAt(Placement.Resting, new(1, 0, 0), new(0, 2, 0))], defaultScale: [new(3, 3, 3)]);
+        var set = ShadowShapeBuilder.Build(setup, Lookup(A, B), new(ShapePolicy.Retail));
+        Assert.Contains(set.Diagnostics, d => d.Code == DiagnosticCodes.DefaultScaleCount && d.Message.Contains("1 entries for 2 parts"));
+        Assert.All(set.Shapes, s => Assert.Equal(1f, s.Scale));
+    }
+
+    [Fact]
     public void Entity_scale_scales_cylinders_and_spheres()
     {
         var creature = Setup(0x02000006, [0x01000009], cyls: [new CylSphere(new(0, 0, 0.1f), 0.4f, 1.8f)]);
