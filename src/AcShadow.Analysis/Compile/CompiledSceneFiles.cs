@@ -1,4 +1,3 @@
-using System.Text;
 using AcShadow.Analysis.Chart.Output;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Formats;
@@ -19,15 +18,15 @@ public static class CompiledSceneFiles
     private const string ChartCsvPath = "scene-chart.csv";
     private const string ChartSvgPath = "scene-chart.svg";
 
-    public static IReadOnlyList<ChartFile> Render(CompiledSceneReport report, Func<uint, BspDump?> dumps)
+    public static IReadOnlyList<OutputFile> Render(CompiledSceneReport report, Func<uint, BspDump?> dumps)
     {
-        var files = new List<ChartFile> { new(FileFormats.CompiledScene.Path, CompiledSceneWriter.Write(report)) };
+        var files = new List<OutputFile> { new(FileFormats.CompiledScene.Path, CompiledSceneWriter.Write(report)) };
         foreach (var id in CompiledSceneWriter.BspGfxObjs(report))
-            if (dumps(id) is { } dump) files.Add(new ChartFile(FileFormats.Bsp.PathFor(id), BspFileWriter.Write(dump)));
+            if (dumps(id) is { } dump) files.Add(new OutputFile(FileFormats.Bsp.PathFor(id), BspFileWriter.Write(dump)));
         foreach (var cell in report.Cells)
-            if (cell.Bsp is not null) files.Add(new ChartFile(CompiledSceneWriter.CellBspPath(cell.Cell.Id), BspFileWriter.Write(cell.Physics!)));
-        files.Add(new ChartFile(ChartCsvPath, new UTF8Encoding(false).GetBytes(SceneChartCsv.Write(report))));
-        files.Add(new ChartFile(ChartSvgPath, new UTF8Encoding(false).GetBytes(SceneChartSvg.Write(report))));
+            if (cell.Bsp is not null) files.Add(new OutputFile(CompiledSceneWriter.CellBspPath(cell.Cell.Id), BspFileWriter.Write(cell.Physics!)));
+        files.Add(OutputFile.Text(ChartCsvPath, SceneChartCsv.Write(report)));
+        files.Add(OutputFile.Text(ChartSvgPath, SceneChartSvg.Write(report)));
         return files;
     }
 }

@@ -175,7 +175,7 @@ public static class BatchCommand
     {
         var outDir = folder.Root;
         var listed = IndexListing.Read(outDir);
-        var candidates = new List<(string Path, byte[] Head)>();
+        var candidates = new List<OutputFile>();
         // A file the index lists is ours even when damaged; anything but a regular file never is.
         bool NeedsCheck(string relative) => FileKinds.Of(OutputPaths.Target(outDir, relative)) switch
         {
@@ -185,7 +185,7 @@ public static class BatchCommand
         };
         void Consider(string relative, string format)
         {
-            if (NeedsCheck(relative)) candidates.Add((relative, ForeignFileGuard.JsonHead(format).ToArray()));
+            if (NeedsCheck(relative)) candidates.Add(new OutputFile(relative, ForeignFileGuard.JsonHead(format).ToArray()));
         }
         foreach (var setup in plan.Setups) Consider(FileFormats.Shadow.PathFor(setup.Id), FileFormats.Shadow.Format);
         var gfxobjs = Path.Combine(outDir, "gfxobjs");
@@ -195,7 +195,7 @@ public static class BatchCommand
                 var relative = "gfxobjs/" + Path.GetFileName(file);
                 if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, FileFormats.Bsp.Format);
                 else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && NeedsCheck(relative))
-                    candidates.Add((relative, System.Text.Encoding.UTF8.GetBytes("{\n  \"GfxObjId\": 0,\n")));
+                    candidates.Add(OutputFile.Text(relative, "{\n  \"GfxObjId\": 0,\n"));
             }
         if (plan.Scene is not null) Consider(FileFormats.Scene.Path, FileFormats.Scene.Format);
         foreach (var cell in plan.Scene?.Cells ?? [])
@@ -203,11 +203,11 @@ public static class BatchCommand
             Consider(FileFormats.Cell.PathFor(cell.Id), FileFormats.Cell.Format);
             var acdream = FileFormats.AcdreamCell.PathFor(cell.Id);
             if (formats.HasFlag(OutputFormats.Acdream) && NeedsCheck(acdream))
-                candidates.Add((acdream, System.Text.Encoding.UTF8.GetBytes("{\n  \"CellId\": 0,\n")));
+                candidates.Add(OutputFile.Text(acdream, "{\n  \"CellId\": 0,\n"));
         }
         Consider(FileFormats.Index.Path, FileFormats.Index.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
-        folder.RefuseForeign(candidates.Select(c => (c.Path, (ReadOnlyMemory<byte>)c.Head)), listed);
+        folder.RefuseForeign(candidates, listed);
     }
 
     private static void RemoveIndex(string outDir)

@@ -89,7 +89,7 @@ public static class ChartCommand
 
         using var folder = OutputFolder.Open(outDir);
         var cells = planned?.Scene?.Cells ?? [];
-        folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null).Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null));
 
         var subjects = new ChartSubjects(dat.Portal, pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked

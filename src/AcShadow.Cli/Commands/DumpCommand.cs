@@ -92,7 +92,7 @@ public static class DumpCommand
         files.AddRange(cellExport.BspFiles);
         var bytes = Write(console, outDir, OutputFormatSelection.Apply(files.DistinctBy(f => f.RelativePath), formats).ToArray());
         console.Out.WriteLine(
-            $"dump {JsonIds.Format(cellId)}: cell structure {envCell.CellStructure} of {JsonIds.Format(envCell.EnvironmentFileId)}, {cellFile.PolygonCount} physics polygon(s), " +
+            $"dump {JsonIds.Format(cellId)}: cell structure {envCell.CellStructure} of {JsonIds.Format(envCell.EnvironmentFileId)}, {cellFile.Listing!.PolygonCount} physics polygon(s), " +
             $"{envCell.Portals.Count} portal(s), {envCell.StaticObjects.Count} object(s) inside{(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, " +
             $"{cellExport.Diagnostics.Count} diagnostic(s), {bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
         return ExitCodes.Ok;
@@ -120,9 +120,8 @@ public static class DumpCommand
     private static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
     {
         using var folder = OutputFolder.Open(outDir);
-        var contents = files.Select(f => (f.RelativePath, f.Content)).ToArray();
-        folder.RefuseForeign(contents);
-        var bytes = folder.WriteEach(contents, console.Out, console.Interrupted);
+        folder.RefuseForeign(files);
+        var bytes = folder.WriteEach(files, console.Out, console.Interrupted);
         folder.RequireStillInPlace();
         return bytes;
     }

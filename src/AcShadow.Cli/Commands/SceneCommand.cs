@@ -96,7 +96,7 @@ public static class SceneCommand
             warnings.Add(JsonIds.Format(cell.Cell.Id), cell.Diagnostics);
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
-        folder.RefuseForeign(files.Select(f => (f.RelativePath, (ReadOnlyMemory<byte>)f.Content)));
+        folder.RefuseForeign(files);
         long bytes = 0;
         foreach (var file in files)
         {

@@ -58,7 +58,7 @@ public static class VerifyCommand
         var result = BatchRunner.Run(dat.Portal, options, plan, inputs, jobs, cancellation: console.Interrupted);
         dat.RequireUnchanged();
 
-        var expected = result.AllFiles.ToDictionary(f => f.Path, f => f.Content, StringComparer.Ordinal);
+        var expected = result.AllFiles.ToDictionary(f => f.RelativePath, f => f.Content, StringComparer.Ordinal);
         var actual = ReadFolder(folder, index);
         var datDifferences = FixtureComparer.DatDifferences("dat", recorded.Dat, dat.Portal.Info)
             .Concat(FixtureComparer.DatDifferences("cell dat", recorded.CellDat, cellInfo)).ToArray();

@@ -10,6 +10,7 @@ using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
@@ -290,8 +291,8 @@ public static partial class ViewCommand
     {
         var files = scenes.SelectMany(s => new[]
         {
-            (RelativePath: s.Name + ".glb", Content: (ReadOnlyMemory<byte>)GlbWriter.Write(s)),
-            (RelativePath: s.Name + ".svg", Content: (ReadOnlyMemory<byte>)System.Text.Encoding.UTF8.GetBytes(ThreeViewSvg.Write(s))),
+            new OutputFile(s.Name + ".glb", GlbWriter.Write(s)),
+            OutputFile.Text(s.Name + ".svg", ThreeViewSvg.Write(s)),
         }).ToArray();
         using (var folder = OutputFolder.Open(outDir))
         {

@@ -1,5 +1,6 @@
 using System.Text;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Core.Formats;
 using AcShadow.Files;
 
 namespace AcShadow.Cli.Output;
@@ -12,7 +13,7 @@ namespace AcShadow.Cli.Output;
 /// </summary>
 public static class ForeignFileGuard
 {
-    public static void Refuse(string root, IEnumerable<(string RelativePath, ReadOnlyMemory<byte> Content)> files,
+    public static void Refuse(string root, IEnumerable<OutputFile> files,
         IReadOnlySet<string>? listedAsOurs = null, string option = "--out")
     {
         var foreign = new List<string>();

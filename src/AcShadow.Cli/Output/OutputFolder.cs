@@ -1,4 +1,5 @@
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Core.Formats;
 
 namespace AcShadow.Cli.Output;
 
@@ -41,7 +42,7 @@ public sealed class OutputFolder : IDisposable
     }
 
     /// <summary>Refuses the run, naming them, when any of these files exists and is not acshadow's (or, listed, the folder's index says it is).</summary>
-    public void RefuseForeign(IEnumerable<(string RelativePath, ReadOnlyMemory<byte> Content)> files, IReadOnlySet<string>? listedAsOurs = null) =>
+    public void RefuseForeign(IEnumerable<OutputFile> files, IReadOnlySet<string>? listedAsOurs = null) =>
         ForeignFileGuard.Refuse(Root, files, listedAsOurs, Option);
 
     /// <summary>Whether the file already holds exactly these bytes (then it is left alone: its timestamp kept, no new inode).</summary>
@@ -58,7 +59,7 @@ public sealed class OutputFolder : IDisposable
     /// (no rewrite, its timestamp kept so build tools and git see no change, and no replace-by-rename that
     /// frees an inode); the files' total size.
     /// </summary>
-    public long WriteEach(IEnumerable<(string RelativePath, ReadOnlyMemory<byte> Content)> files, TextWriter log, CancellationToken interrupted)
+    public long WriteEach(IEnumerable<OutputFile> files, TextWriter log, CancellationToken interrupted)
     {
         long bytes = 0;
         foreach (var (path, content) in files)

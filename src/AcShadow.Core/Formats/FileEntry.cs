@@ -9,7 +9,11 @@ namespace AcShadow.Core.Formats;
 /// </summary>
 public sealed record FileEntry(string RelativePath, FixtureKind Kind, uint Id, int ShapeCount, int PolygonCount, long Bytes, string Sha256)
 {
-    public static FileEntry Of(OutputFile file) =>
-        new(file.RelativePath, file.Kind, file.Id, file.ShapeCount, file.PolygonCount, file.Content.Length,
+    /// <summary>The entry of an export's file (one with a <see cref="OutputFile.Listing"/>).</summary>
+    public static FileEntry Of(OutputFile file)
+    {
+        var listing = file.Listing ?? throw new ArgumentException($"{file.RelativePath} is no export file: index.json lists only those", nameof(file));
+        return new(file.RelativePath, listing.Kind, listing.Id, listing.ShapeCount, listing.PolygonCount, file.Content.Length,
             Convert.ToHexStringLower(SHA256.HashData(file.Content.Span)));
+    }
 }

@@ -2,6 +2,7 @@ using System.Globalization;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Analysis.Chart.Output;
+using AcShadow.Core.Formats;
 
 namespace AcShadow.Tests.Chart;
 
@@ -17,8 +18,8 @@ public class ChartOutputTests
         Assert.Equal(first.Select(f => f.RelativePath), second.Select(f => f.RelativePath));
         for (var i = 0; i < first.Count; i++)
         {
-            Assert.Equal(first[i].Content, second[i].Content);
-            Assert.Equal(first[i].Content, third[i].Content);
+            Assert.Equal(first[i].Content.ToArray(), second[i].Content.ToArray());
+            Assert.Equal(first[i].Content.ToArray(), third[i].Content.ToArray());
         }
         Assert.Equal(["chart.csv", "summary.csv", "failures.csv", "speed-accuracy.svg", "failure-map-0x020019FF.svg", "failure-map-0x02001000.svg"],
             first.Select(f => f.RelativePath));
@@ -28,7 +29,7 @@ public class ChartOutputTests
     public void Csv_files_have_their_headers_and_one_row_per_object_and_model()
     {
         var report = SampleChart.Run(null, 0x020019FF, 0x02001000, 0x02002000);
-        var files = report.Files.ToDictionary(f => f.RelativePath, f => System.Text.Encoding.UTF8.GetString(f.Content));
+        var files = report.Files.ToDictionary(f => f.RelativePath, f => System.Text.Encoding.UTF8.GetString(f.Content.Span));
         var chart = files["chart.csv"].Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal(ChartCsv.Header, chart[0]);
         Assert.Equal(3 * ShapeModels.All.Count, chart.Length - 1);
@@ -76,7 +77,7 @@ public class ChartOutputTests
         Assert.True(report.Objects.Single(o => o.SetupId == 0x02001000).Models.Single(m => m.Model == "spheres").Exact);
     }
 
-    private static IReadOnlyList<ChartFile> Render(CultureInfo culture, params uint[] setups)
+    private static IReadOnlyList<OutputFile> Render(CultureInfo culture, params uint[] setups)
     {
         var saved = (CultureInfo.CurrentCulture, CultureInfo.CurrentUICulture);
         try

@@ -43,7 +43,7 @@ public class DoorChartTests
     [Fact]
     public void Both_svgs_show_the_door_result()
     {
-        var files = SampleChart.DoorOnly.Files.ToDictionary(f => f.RelativePath, f => Encoding.UTF8.GetString(f.Content));
+        var files = SampleChart.DoorOnly.Files.ToDictionary(f => f.RelativePath, f => Encoding.UTF8.GetString(f.Content.Span));
         var fallback = Model("fallback-cylinder");
         Assert.Contains($"fallback-cylinder ({fallback.FalsePass} false passes)", files["speed-accuracy.svg"]);
         var map = files["failure-map-0x020019FF.svg"];

@@ -2,6 +2,7 @@ using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Analysis.Chart.Output;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Formats;
 using AcShadow.Forging;
 
 namespace AcShadow.Tests.Chart;
@@ -29,7 +30,7 @@ public static class SampleChart
         models ??= ShapeModels.All;
         var names = models.Select(m => m.Name).ToArray();
         var charts = new List<ObjectChart>();
-        var maps = new List<ChartFile>();
+        var maps = new List<OutputFile>();
         using var chartCsv = new StringWriter();
         using var failuresCsv = new StringWriter();
         var files = ChartFiles.Begin(chartCsv, failuresCsv, options, names);
@@ -39,10 +40,10 @@ public static class SampleChart
             maps.Add(files.Add(chart));
         }, models, timer);
         var totals = ChartFiles.Totals(options, names, tally.Objects, tally.Summaries());
-        ChartFile[] all =
+        OutputFile[] all =
         [
-            Utf8("chart.csv", chartCsv.ToString()), totals.Single(f => f.RelativePath == "summary.csv"),
-            Utf8("failures.csv", failuresCsv.ToString()), totals.Single(f => f.RelativePath == "speed-accuracy.svg"), .. maps,
+            OutputFile.Text("chart.csv", chartCsv.ToString()), totals.Single(f => f.RelativePath == "summary.csv"),
+            OutputFile.Text("failures.csv", failuresCsv.ToString()), totals.Single(f => f.RelativePath == "speed-accuracy.svg"), .. maps,
         ];
         return new SampleRun(options, names, charts, all);
     }
@@ -50,14 +51,12 @@ public static class SampleChart
     private static readonly Lazy<SampleRun> DoorReport = new(() => Run(null, Door));
 
     public static SampleRun DoorOnly => DoorReport.Value;
-
-    private static ChartFile Utf8(string path, string text) => new(path, new System.Text.UTF8Encoding(false).GetBytes(text));
 }
 
 /// <summary>One chart run's options, models (the reference first), charts in subject order, and files in the order a run finishes them.</summary>
-public sealed record SampleRun(ChartOptions Options, IReadOnlyList<string> Models, IReadOnlyList<ObjectChart> Objects, IReadOnlyList<ChartFile> Files)
+public sealed record SampleRun(ChartOptions Options, IReadOnlyList<string> Models, IReadOnlyList<ObjectChart> Objects, IReadOnlyList<OutputFile> Files)
 {
     public string Reference => Models[0];
 
-    public string Text(string path) => System.Text.Encoding.UTF8.GetString(Files.Single(f => f.RelativePath == path).Content);
+    public string Text(string path) => System.Text.Encoding.UTF8.GetString(Files.Single(f => f.RelativePath == path).Content.Span);
 }

@@ -126,12 +126,12 @@ public class SceneCompileTests
         using var dir = new TempDir();
         var report = Exact.Value;
         var files = CompiledSceneFiles.Render(report, id => AcShadow.Core.Bsp.BspExtractor.Extract(SampleChart.Subjects.Value.GfxObj(id)!));
-        Assert.Equal(files.Select(f => f.Content), CompiledSceneFiles.Render(Compile(new SceneCompileOptions()), id => AcShadow.Core.Bsp.BspExtractor.Extract(SampleChart.Subjects.Value.GfxObj(id)!)).Select(f => f.Content));
+        Assert.Equal(files.Select(f => f.Content.ToArray()), CompiledSceneFiles.Render(Compile(new SceneCompileOptions()), id => AcShadow.Core.Bsp.BspExtractor.Extract(SampleChart.Subjects.Value.GfxObj(id)!)).Select(f => f.Content.ToArray()));
         foreach (var f in files)
         {
             var path = Path.Combine(dir.Path, f.RelativePath);
             Directory.CreateDirectory(Path.GetDirectoryName(path)!);
-            File.WriteAllBytes(path, f.Content);
+            File.WriteAllBytes(path, f.Content.Span);
         }
         var loaded = CompiledScene.Load(dir.Path);
         Assert.Equal(report.Placed.Count, loaded.Objects.Count);
@@ -219,7 +219,7 @@ public class SceneCompileTests
         {
             var path = Path.Combine(dir.Path, f.RelativePath);
             Directory.CreateDirectory(Path.GetDirectoryName(path)!);
-            File.WriteAllBytes(path, f.Content);
+            File.WriteAllBytes(path, f.Content.Span);
         }
         var loaded = CompiledScene.Load(dir.Path);
         var retail = SceneCompiler.Query(report, c => c.Retail);

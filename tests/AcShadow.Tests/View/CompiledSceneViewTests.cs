@@ -83,7 +83,7 @@ public sealed class CompiledSceneViewTests
         {
             var path = Path.Combine(dir.Path, file.RelativePath);
             Directory.CreateDirectory(Path.GetDirectoryName(path)!);
-            File.WriteAllBytes(path, file.Content);
+            File.WriteAllBytes(path, file.Content.Span);
         }
         return dir;
     }

@@ -1,6 +1,7 @@
 using System.Text;
 using AcShadow.Analysis.Compile;
 using AcShadow.Analysis.Chart.Output;
+using AcShadow.Core.Formats;
 using static AcShadow.Analysis.Chart.Output.ChartFormat;
 
 namespace AcShadow.Analysis.Chart.Cells;
@@ -18,7 +19,7 @@ public static class CellsCsv
         "blocked,clear,median_ns_per_query,p10_ns_per_query,p90_ns_per_query,diagnostics";
 
     /// <summary>The file's start (its header row), for the chart's check that it replaces only its own files.</summary>
-    public static ChartFile Head => ChartFiles.Utf8(FileName, Header + "\n");
+    public static OutputFile Head => OutputFile.Text(FileName, Header + "\n");
 
     public static string Write(IEnumerable<CellChart> cells)
     {

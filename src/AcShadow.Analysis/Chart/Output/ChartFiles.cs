@@ -1,4 +1,5 @@
 using System.Text;
+using AcShadow.Core.Formats;
 
 namespace AcShadow.Analysis.Chart.Output;
 
@@ -32,18 +33,18 @@ public sealed class ChartFiles
     }
 
     /// <summary>Adds one charted object's rows to chart.csv and failures.csv, and gives its failure map.</summary>
-    public ChartFile Add(ObjectChart chart)
+    public OutputFile Add(ObjectChart chart)
     {
         _chartCsv.Write(ChartCsv.Rows(chart));
         _failuresCsv.Write(FailuresCsv.Rows(chart));
-        return Utf8(FailureMapSvg.FileName(chart.SetupId), FailureMapSvg.Write(_options, _reference, chart));
+        return OutputFile.Text(FailureMapSvg.FileName(chart.SetupId), FailureMapSvg.Write(_options, _reference, chart));
     }
 
     /// <summary>summary.csv and speed-accuracy.svg, from the totals of a run over <paramref name="objects"/> objects.</summary>
-    public static IReadOnlyList<ChartFile> Totals(ChartOptions options, IReadOnlyList<string> models, int objects, IReadOnlyList<ModelSummary> summaries) =>
+    public static IReadOnlyList<OutputFile> Totals(ChartOptions options, IReadOnlyList<string> models, int objects, IReadOnlyList<ModelSummary> summaries) =>
     [
-        Utf8("summary.csv", SummaryCsv.Write(summaries)),
-        Utf8("speed-accuracy.svg", SpeedAccuracySvg.Write(options, models[0], objects, summaries)),
+        OutputFile.Text("summary.csv", SummaryCsv.Write(summaries)),
+        OutputFile.Text("speed-accuracy.svg", SpeedAccuracySvg.Write(options, models[0], objects, summaries)),
     ];
 
     /// <summary>
@@ -51,16 +52,15 @@ public sealed class ChartFiles
     /// root element): for checking, before any object is charted, that no file acshadow does not own would
     /// be replaced. <paramref name="cells"/>: cells.csv's, when a landblock's indoor cells are charted too.
     /// </summary>
-    public static IEnumerable<ChartFile> Heads(IEnumerable<uint> objectIds, ChartFile? cells = null)
+    public static IEnumerable<OutputFile> Heads(IEnumerable<uint> objectIds, OutputFile? cells = null)
     {
         var svg = new UTF8Encoding(false).GetBytes(new SvgDocument(1, 1).Render());
-        yield return Utf8("chart.csv", ChartCsv.Header + "\n");
-        yield return Utf8("summary.csv", SummaryCsv.Header + "\n");
-        yield return Utf8("failures.csv", FailuresCsv.Header + "\n");
-        yield return new ChartFile("speed-accuracy.svg", svg);
+        yield return OutputFile.Text("chart.csv", ChartCsv.Header + "\n");
+        yield return OutputFile.Text("summary.csv", SummaryCsv.Header + "\n");
+        yield return OutputFile.Text("failures.csv", FailuresCsv.Header + "\n");
+        yield return new OutputFile("speed-accuracy.svg", svg);
         if (cells is not null) yield return cells;
-        foreach (var id in objectIds) yield return new ChartFile(FailureMapSvg.FileName(id), svg);
+        foreach (var id in objectIds) yield return new OutputFile(FailureMapSvg.FileName(id), svg);
     }
 
-    internal static ChartFile Utf8(string path, string text) => new(path, new UTF8Encoding(false).GetBytes(text));
-}
+    }
