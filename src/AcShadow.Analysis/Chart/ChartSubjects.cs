@@ -11,9 +11,12 @@ namespace AcShadow.Analysis.Chart;
 
 /// <summary>
 /// Chart subjects from a dat: each Setup with cached GfxObj and compiled-BSP lookups shared across Setups.
-/// The caches hold at most about <see cref="CacheCapacity"/> GfxObjs: past that they are started afresh
-/// before the next subject (a subject made earlier keeps the caches it was made with), so charting a
-/// whole dat does not keep every GfxObj of it in memory.
+/// The two caches hold the same GfxObjs (each compiled BSP is of a GfxObj in the GfxObj cache), and are
+/// started afresh before the next subject once they hold more than <see cref="CacheCapacity"/> (2048 by
+/// default), so they hold at most that many plus one subject's parts (a subject made earlier keeps the
+/// caches it was made with until it is dropped). The dat source beneath keeps its own cache, which this
+/// class does not bound: a <see cref="DatDatabase"/> made without a capacity keeps every object it decodes,
+/// so a run over a whole dat passes one with a capacity (chart and batch keep 256 decoded objects).
 /// </summary>
 public sealed class ChartSubjects
 {

@@ -83,8 +83,7 @@ public static class BatchCommand
         };
         RefuseForeignFiles(folder, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
-        // A second view over the same archive; `dat` owns and disposes the archive.
-        var source = new DatDatabase(dat.Portal.Archive, cacheCapacity: 256);
+        var source = dat.PortalWorkingSet();
         // Fingerprints (every object read again and hashed) only when the state they feed is written.
         var reuse = incremental
             ? new BatchReuse(ReadState(outDir), IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HasSize(outDir, file))

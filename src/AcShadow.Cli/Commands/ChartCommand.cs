@@ -91,7 +91,9 @@ public static class ChartCommand
         var cells = planned?.Scene?.Cells ?? [];
         folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null));
 
-        var subjects = new ChartSubjects(dat.Portal, pose);
+        // The subjects keep their own GfxObj cache; beneath it the dat keeps a bounded working set, so a chart
+        // of the whole dat does not hold every object it decoded.
+        var subjects = new ChartSubjects(dat.PortalWorkingSet(), pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
         // for by --setup has been read above, so it is decodable. The first few are warned about as they
         // come; the summary counts them all.

@@ -14,7 +14,7 @@ public static class CommonOptions
     };
 
     public static Option<ShapePolicy?> Policy() =>
-        ValueOptions.Single("--policy", "retail|union", "retail (default: the retail client's rules) or union (the seed design's builder)", ArgumentParsing.Policy);
+        ValueOptions.Single("--policy", "retail|union", "retail (default: the retail client's rules) or union (acdream's ShadowShapeBuilder design: every CylSphere, Sphere and BSP part)", ArgumentParsing.Policy);
 
     /// <summary>--scale; not given, the entity scale is 1.</summary>
     public static Option<float?> Scale() =>

@@ -27,6 +27,16 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
     public bool Reads(string path) =>
         FileKinds.Identity(path) is { } identity && (watches ?? []).Any(w => w.Is(identity));
 
+    /// <summary>Decoded objects a run over many objects keeps (<see cref="PortalWorkingSet"/>).</summary>
+    public const int WorkingSetObjects = 256;
+
+    /// <summary>
+    /// A second view over the portal archive that keeps at most <see cref="WorkingSetObjects"/> decoded objects
+    /// (oldest dropped first), for a run over many objects: <see cref="Portal"/> keeps every object it decodes.
+    /// This dat still owns and disposes the archive.
+    /// </summary>
+    public DatDatabase PortalWorkingSet() => new(Portal.Archive, WorkingSetObjects);
+
     public void Dispose()
     {
         Portal.Dispose();

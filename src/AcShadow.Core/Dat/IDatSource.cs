@@ -3,9 +3,13 @@ using AcShadow.Core.Dat.Objects;
 namespace AcShadow.Core.Dat;
 
 /// <summary>
-/// Everything acshadow needs from a dat: the one seam between the domain and the file format, so a
-/// package reader (Chorizite.DatReaderWriter) can replace <see cref="DatDatabase"/> without touching
-/// the domain. Missing ids give null; a damaged object, whatever the damage, throws one
+/// Everything the domain needs from a dat: every export step (poses, shapes, BSP, cells, batch), the chart
+/// and scene read through this seam only, so a package reader (Chorizite.DatReaderWriter) could replace
+/// <see cref="DatDatabase"/> beneath them. What is not behind it: opening a file, checking its header and
+/// sizing the object cache (<see cref="DatDatabase"/>, opened by the CLI's DatLocator, and batch builds its
+/// own over the <see cref="DatArchive"/>), so such a reader would replace that opening code too; and doctor,
+/// which checks the dat's own structure and works on <see cref="DatArchive"/> by design (docs/dat-layer.md).
+/// Missing ids give null; a damaged object, whatever the damage, throws one
 /// <see cref="DatFormatException"/> reading "corrupt dat: {kind} 0x{id} in {file}: …" with its
 /// <see cref="DatFormatException.ObjectId"/> (an implementation catches its decoder's exceptions here).
 /// </summary>

@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// </summary>
 public interface IShapeModel
 {
-    /// <summary>Short, stable, lower-case name used in CSV rows, SVG labels and the --model option.</summary>
+    /// <summary>Short, stable, lower-case name used in chart's and scene's CSV rows and SVG labels, compiled-scene.json's chosen model and view's layer names (no option selects models by it).</summary>
     string Name { get; }
 
     /// <summary>One sentence for docs and legends.</summary>
