@@ -12,7 +12,7 @@ namespace AcShadow.Fixtures;
 public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePolicy Policy, float EntityScale, IReadOnlyList<ScenePlacement> Objects)
 {
     /// <summary>The landblock's EnvCells (empty when the batch ran with --no-cells or the landblock has none).</summary>
-    public IReadOnlyList<SceneCellFile> Cells { get; init; } = [];
+    internal IReadOnlyList<SceneCellFile> Cells { get; init; } = [];
 
     public static FixtureScene Read(string json)
     {

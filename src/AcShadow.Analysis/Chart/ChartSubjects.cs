@@ -15,7 +15,7 @@ namespace AcShadow.Analysis.Chart;
 /// before the next subject (a subject made earlier keeps the caches it was made with), so charting a
 /// whole dat does not keep every GfxObj of it in memory.
 /// </summary>
-public sealed class ChartSubjects
+internal sealed class ChartSubjects
 {
     public const int DefaultCacheCapacity = 2048;
 
@@ -23,7 +23,7 @@ public sealed class ChartSubjects
     private Dictionary<uint, GfxObj?> _gfxObjs = [];
     private readonly Lock _lock = new();
 
-    public CompiledBspCache Bsps { get; private set; }
+    internal CompiledBspCache Bsps { get; private set; }
     public int CacheCapacity { get; }
 
     /// <summary>The portal dat the subjects come from.</summary>

@@ -17,7 +17,7 @@ namespace AcShadow.Analysis.Compile;
 /// field but <c>evidence.medianNsPerQuery</c> and <c>timing</c> is the same bytes on every run (the
 /// counted costs, <c>opsPerQuery</c> and <c>…OpsPerPosition</c>, included).
 /// </summary>
-public static class CompiledSceneWriter
+internal static class CompiledSceneWriter
 {
     public static byte[] Write(CompiledSceneReport report)
     {

@@ -23,7 +23,7 @@ namespace AcShadow.Analysis.Compile;
 /// compiled (<see cref="SceneTotals"/>). Objects one after another, so answers are the same on every
 /// machine and timings do not disturb each other.
 /// </summary>
-public static class SceneCompiler
+internal static class SceneCompiler
 {
     public static CompiledSceneReport Compile(LandblockScene scene, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer, Action<int, int>? progress = null)
     {
@@ -200,7 +200,7 @@ public static class SceneCompiler
     /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
     /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
     /// </summary>
-    public static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
+    internal static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
     {
         var objects = new List<PlacedQuery>();
@@ -225,7 +225,7 @@ public static class SceneCompiler
     }
 
     /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
-    public static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
+    internal static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
         Query(report.Placed, report.Compiled, report.Cells, pick);
 
     /// <summary>The sphere around an entity-space box, padded so rounding never lets it reject a touching sphere.</summary>

@@ -12,7 +12,7 @@ namespace AcShadow.Analysis.Compile;
 /// inside it the turn into the object's frame and its model's count; then each cell's turn into its frame
 /// and its tree's count; stopping at the first that blocks, as <see cref="SceneQuery"/> does.
 /// </summary>
-public static class SceneCost
+internal static class SceneCost
 {
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample)

@@ -20,6 +20,4 @@ public sealed record BatchResult(
     /// <summary>Every file including index.json (last), as written to disk.</summary>
     public IEnumerable<(string Path, ReadOnlyMemory<byte> Content)> AllFiles =>
         Files.Select(f => (f.RelativePath, f.Content)).Append((FileFormats.Index.Path, IndexJson));
-
-    public long TotalBytes => Files.Sum(f => (long)f.Content.Length) + IndexJson.LongLength;
 }

@@ -10,7 +10,7 @@ namespace AcShadow.Fixtures.Formats;
 /// Reads an "acshadow.cell/1" file into a <see cref="CellFile"/>. Malformed input is a
 /// <see cref="FormatException"/> naming the field.
 /// </summary>
-public static class CellFileReader
+internal static class CellFileReader
 {
     public static CellFile Read(string json)
     {

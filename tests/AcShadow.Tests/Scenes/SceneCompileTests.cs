@@ -5,6 +5,7 @@ using AcShadow.Analysis.Compile;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Scenes;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Forging;
 using AcShadow.Tests.Chart;

@@ -3,6 +3,7 @@ using System.Numerics;
 using AcShadow.Analysis.Compile;
 using AcShadow.Analysis.View;
 using AcShadow.Core.Bsp;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;

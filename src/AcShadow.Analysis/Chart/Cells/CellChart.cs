@@ -14,7 +14,7 @@ namespace AcShadow.Analysis.Chart.Cells;
 /// EnvCell::find_env_collisions), and that query timed. A cell has no cheaper model to compare (every
 /// cheaper model is a solid that would fill the room), so the chart records where its walls block.
 /// </summary>
-public sealed record CellChart(CellCompilation Cell, bool[] Answers, TimingStats Timing)
+internal sealed record CellChart(CellCompilation Cell, bool[] Answers, TimingStats Timing)
 {
     public const string Model = CellCompilation.Model;
 

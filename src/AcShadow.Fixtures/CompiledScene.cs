@@ -4,8 +4,9 @@ using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 
-namespace AcShadow.Fixtures.Scenes;
+namespace AcShadow.Fixtures;
 
 /// <summary>
 /// compiled-scene.json (what <c>acshadow scene</c> writes) loaded: every object answered by the model the
@@ -19,9 +20,9 @@ public sealed class CompiledScene
     public uint LandblockId { get; }
     public IReadOnlyList<float> MoverRadii { get; }
     public double TolerancePercent { get; }
-    public IReadOnlyList<CompiledObject> Objects { get; }
-    public IReadOnlyList<CompiledCell> Cells { get; }
-    public SceneQuery Query { get; }
+    internal IReadOnlyList<CompiledObject> Objects { get; }
+    internal IReadOnlyList<CompiledCell> Cells { get; }
+    internal SceneQuery Query { get; }
 
     private CompiledScene(uint landblockId, IReadOnlyList<float> moverRadii, double tolerance, IReadOnlyList<CompiledObject> objects, IReadOnlyList<CompiledCell> cells, SceneQuery query)
     {
