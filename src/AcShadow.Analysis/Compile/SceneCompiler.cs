@@ -54,13 +54,13 @@ internal static class SceneCompiler
     /// </summary>
     public static CellCompilation CompileCell(EnvCell cell, CellStructures structures, ChartOptions chart)
     {
-        var frame = new PartPose(cell.Position.Origin, Normalised(cell.Position.Orientation), 1f);
+        var frame = new PartPose(cell.Position.Position, Normalised(cell.Position.Rotation), 1f);
         var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
         if (geometry is null)
             return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
         var physics = geometry.Physics with { GfxObjId = cell.Id };
         var diagnostics = physics.Diagnostics.Select(d => new Diagnostic("bsp-geometry", d)).ToList();
-        if (!(float.IsFinite(cell.Position.Origin.X) && float.IsFinite(cell.Position.Origin.Y) && float.IsFinite(cell.Position.Origin.Z)) || !float.IsFinite(cell.Position.Orientation.Length()) || cell.Position.Orientation.Length() < 1e-6f)
+        if (!(float.IsFinite(cell.Position.Position.X) && float.IsFinite(cell.Position.Position.Y) && float.IsFinite(cell.Position.Position.Z)) || !float.IsFinite(cell.Position.Rotation.Length()) || cell.Position.Rotation.Length() < 1e-6f)
         {
             diagnostics.Add(new Diagnostic("unresolved", $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
             return new CellCompilation(cell, physics, null, frame, [], Bounds.Empty, diagnostics);
@@ -160,7 +160,7 @@ internal static class SceneCompiler
         foreach (var p in placed)
         {
             if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;
-            var frame = new PartPose(p.Object.Frame.Origin, Normalised(p.Object.Frame.Orientation), 1f);
+            var frame = new PartPose(p.Object.Frame.Position, Normalised(p.Object.Frame.Rotation), 1f);
             foreach (var probe in c.Probes) positions.Add(probe with { Center = frame.ToEntity(probe.Center) });
         }
         foreach (var cell in cells)
@@ -205,9 +205,9 @@ internal static class SceneCompiler
     {
         var objects = new List<PlacedQuery>();
         foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
-            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Origin, p.Object.Frame.Orientation, model.Query, center, radius));
+            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Position, p.Object.Frame.Rotation, model.Query, center, radius));
         var cellQueries = cells.Where(c => c.Bsp is not null)
-            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Origin, c.Cell.Position.Orientation))).ToArray();
+            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Position, c.Cell.Position.Rotation))).ToArray();
         return new SceneQuery(objects, cellQueries);
     }
 

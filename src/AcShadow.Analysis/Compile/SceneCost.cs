@@ -20,7 +20,7 @@ internal static class SceneCost
         if (positions.Count == 0 || sample < 1) return 0;
         var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
         {
-            var frame = new PartPose(o.Placed.Object.Frame.Origin, Normalised(o.Placed.Object.Frame.Orientation), 1f);
+            var frame = new PartPose(o.Placed.Object.Frame.Position, Normalised(o.Placed.Object.Frame.Rotation), 1f);
             return (Frame: frame, Bound: frame.ToEntity(o.Center), o.Radius, Counter: new QueryCost.Counter(o.Model.Shapes));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)

@@ -174,9 +174,9 @@ public class CellExportTests
         var world = CellMatrices.World(frame);
         var inverse = CellMatrices.Inverse(frame);
         var p = new Vector3(1.5f, -2, 3);
-        Assert.True(Vector3.Distance(Vector3.Transform(p, world), Vector3.Transform(p, frame.Orientation) + frame.Origin) < 1e-5f);
+        Assert.True(Vector3.Distance(Vector3.Transform(p, world), Vector3.Transform(p, frame.Rotation) + frame.Position) < 1e-5f);
         Assert.True(Vector3.Distance(Vector3.Transform(Vector3.Transform(p, world), inverse), p) < 1e-5f);
-        var numerics = Matrix4x4.CreateFromQuaternion(frame.Orientation) * Matrix4x4.CreateTranslation(frame.Origin);
+        var numerics = Matrix4x4.CreateFromQuaternion(frame.Rotation) * Matrix4x4.CreateTranslation(frame.Position);
         for (var i = 0; i < 4; i++)
             for (var j = 0; j < 4; j++)
                 Assert.True(MathF.Abs(numerics[i, j] - world[i, j]) < 1e-6f, $"M{i + 1}{j + 1}");
