@@ -3,6 +3,7 @@ using System.Text.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 
@@ -72,7 +73,7 @@ public sealed class CompiledScene
         foreach (var o in file.Objects)
         {
             var shapes = o.Shapes.Select(s => Shape(s, trees, bspFile)).ToArray();
-            objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, o.Position, o.Rotation) { CellId = o.CellId });
+            objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, new Frame(o.Position, o.Rotation)) { CellId = o.CellId });
             if (o.Bound is not { } bound) continue;
             queries.Add(new PlacedQuery(o.Index, o.Id, o.Position, o.Rotation, new AnyOverlap(shapes), bound.Center, bound.Radius));
         }
@@ -81,7 +82,7 @@ public sealed class CompiledScene
         foreach (var c in file.Cells)
         {
             if (c.File is null) continue;
-            cells.Add(new CompiledCell(c.CellId, c.Model!, c.Position, c.Rotation));
+            cells.Add(new CompiledCell(c.CellId, c.Model!, new Frame(c.Position, c.Rotation)));
             try
             {
                 cellQueries.Add(new SceneCell(c.CellId, new CellOverlapQuery(bspFile(c.File), c.Position, c.Rotation)));
