@@ -22,8 +22,8 @@ public sealed class CellFixture
     private CellFixture(CellFile file)
     {
         File = file;
-        _query = new CellOverlapQuery(file.Physics, file.LandblockOrigin, file.Orientation);
-        _world = new CellOverlapQuery(file.Physics, file.WorldOrigin, file.Orientation);
+        _query = new CellOverlapQuery(file.Physics, file.LandblockFrame.Position, file.LandblockFrame.Rotation);
+        _world = new CellOverlapQuery(file.Physics, file.WorldFrame.Position, file.WorldFrame.Rotation);
     }
 
     public static CellFixture From(CellFile file) => new(file);

@@ -9,10 +9,10 @@ using static AcShadow.Fixtures.Json.JsonFields;
 namespace AcShadow.Fixtures;
 
 /// <summary>scene.json read back: a landblock's placed objects in world frames, and its indoor cells.</summary>
-public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePolicy Policy, float EntityScale, IReadOnlyList<ScenePlacement> Objects)
+public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePolicy Policy, float EntityScale, IReadOnlyList<PlacedObject> Objects)
 {
     /// <summary>The landblock's EnvCells (empty when the batch ran with --no-cells or the landblock has none).</summary>
-    public IReadOnlyList<SceneCellFile> Cells { get; init; } = [];
+    internal IReadOnlyList<SceneCellFile> Cells { get; init; } = [];
 
     public static FixtureScene Read(string json)
     {
@@ -23,11 +23,10 @@ public sealed record FixtureScene(uint LandblockId, Vector3 WorldOrigin, ShapePo
         if (!ShapePolicies.TryParse(policyText, out var policy)) throw new FormatException($"policy \"{policyText}\" is not retail or union");
         var objects = Arr(root, "objects").Select(o =>
         {
-            var frame = Prop(o, "worldFrame");
             var file = Prop(o, "file");
             var shapes = o.TryGetProperty("shapes", out var s) ? s.EnumerateArray().Select(ShadowFileReader.ReadShape).ToArray() : [];
-            return new ScenePlacement(Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(Str(o, "kind")),
-                Vec(Prop(frame, "origin")), Quat(Prop(frame, "orientation")),
+            return new PlacedObject(Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(Str(o, "kind")),
+                FrameOf(Prop(o, "landblockFrame")), FrameOf(Prop(o, "worldFrame")),
                 file.ValueKind == JsonValueKind.Null ? null : file.GetString(), shapes);
         }).ToArray();
         var cells = root.TryGetProperty("cells", out var c)

@@ -75,7 +75,7 @@ public sealed class FixtureSet
         return cell.File.Objects.Where(o => o.File is not null).Select(o =>
         {
             var fixture = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : BareGfxObj(o.Id, o.File!, o.Shapes, policy, scale);
-            return fixture.PlaceAt(o.LandblockPosition, o.Rotation);
+            return fixture.PlaceAt(o.LandblockFrame.Position, o.LandblockFrame.Rotation);
         }).ToArray();
     }
 
@@ -87,12 +87,12 @@ public sealed class FixtureSet
         foreach (var o in scene.Objects.Where(o => o.File is not null))
         {
             var fixture = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : GfxObj(scene, o);
-            placed.Add(fixture.PlaceAt(o.WorldPosition, o.WorldRotation));
+            placed.Add(fixture.PlaceAt(o.WorldFrame.Position, o.WorldFrame.Rotation));
         }
         return placed;
     }
 
-    private SetupFixture GfxObj(FixtureScene scene, ScenePlacement o) => BareGfxObj(o.Id, o.File!, o.Shapes, scene.Policy, scene.EntityScale);
+    private SetupFixture GfxObj(FixtureScene scene, PlacedObject o) => BareGfxObj(o.Id, o.File!, o.Shapes, scene.Policy, scene.EntityScale);
 
     private SetupFixture BareGfxObj(uint id, string file, IReadOnlyList<ShadowShape> shapes, ShapePolicy policy, float entityScale)
     {

@@ -1,4 +1,4 @@
 namespace AcShadow.Fixtures;
 
 /// <summary>One indoor cell scene.json lists: its id and its cell file (null when it could not be described).</summary>
-public sealed record SceneCellFile(uint Id, string? File);
+internal sealed record SceneCellFile(uint Id, string? File);

@@ -90,7 +90,7 @@ public class CellarWalkTests
         Assert.True(inside.Overlaps(inside.Position + Vector3.Transform(new Vector3(0.2f, 0.2f, 0.3f), inside.Rotation), 0.05f));
         Assert.False(inside.Overlaps(inside.Position + Vector3.Transform(new Vector3(0.2f, 0.2f, 1.5f), inside.Rotation), 0.05f));
 
-        var worldOffset = ground.File.WorldOrigin - ground.File.LandblockOrigin;
+        var worldOffset = ground.File.WorldFrame.Position - ground.File.LandblockFrame.Position;
         foreach (var local in new[] { new Vector3(0, 0, 0.2f), new Vector3(0, 0, 0.4f), new Vector3(2.9f, 0, 1), new Vector3(2.7f, 0, 1) })
         {
             var landblock = ground.ToLandblock(local);

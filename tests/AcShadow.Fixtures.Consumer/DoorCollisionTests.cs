@@ -50,7 +50,7 @@ public class DoorCollisionTests
     {
         var inScene = Fixtures.Scene?.Objects.FirstOrDefault(o => o.Id == Door);
         return inScene is not null
-            ? Fixtures.Setup(Door).PlaceAt(inScene.WorldPosition, inScene.WorldRotation)
+            ? Fixtures.Setup(Door).PlaceAt(inScene.WorldFrame.Position, inScene.WorldFrame.Rotation)
             : Fixtures.Setup(Door).PlaceAt(new Vector3(100f, 200f, 12f), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 3f));
     }
 

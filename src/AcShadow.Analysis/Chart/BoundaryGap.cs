@@ -11,7 +11,7 @@ namespace AcShadow.Analysis.Chart;
 /// Negative: the probe reaches that far past the surface. +∞: the model has no shapes. A disagreement near
 /// zero on either model's geometry is marginal; a large one is a wrong shape.
 /// </summary>
-public static class BoundaryGap
+internal static class BoundaryGap
 {
     public static float Of(IReadOnlyList<PreparedShape> shapes, Vector3 center, float radius)
     {

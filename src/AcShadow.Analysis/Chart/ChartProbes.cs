@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart;
 /// doorway lines across the reference's footprint, then the stability probes on the reference's
 /// geometry and on every model's fitted solids (<see cref="StabilityProbes"/>). The chart and the scene compiler lay them the same way.
 /// </summary>
-public sealed record ChartProbes(Probe[] Probes, float GridSpacing, Bounds Bounds, DoorwayProbes.Opening? Doorway, IReadOnlyList<string> Notes)
+internal sealed record ChartProbes(Probe[] Probes, float GridSpacing, Bounds Bounds, DoorwayProbes.Opening? Doorway, IReadOnlyList<string> Notes)
 {
     public static ChartProbes Lay(PreparedModel reference, IReadOnlyList<PreparedModel> models, ChartOptions options)
     {

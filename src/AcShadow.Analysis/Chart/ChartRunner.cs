@@ -12,7 +12,7 @@ namespace AcShadow.Analysis.Chart;
 /// model. Objects and models run one after another, so answers are the same on any machine and timings are
 /// not disturbed by each other.
 /// </summary>
-public static class ChartRunner
+internal static class ChartRunner
 {
     /// <summary>The code of a model that failed to prepare an object (<see cref="ChartDiagnosticCodes.ModelFailed"/>).</summary>
     public const string ModelFailed = ChartDiagnosticCodes.ModelFailed;

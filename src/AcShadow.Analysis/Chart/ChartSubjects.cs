@@ -18,7 +18,7 @@ namespace AcShadow.Analysis.Chart;
 /// class does not bound: a <see cref="DatDatabase"/> made without a capacity keeps every object it decodes,
 /// so a run over a whole dat passes one with a capacity (chart and batch keep 256 decoded objects).
 /// </summary>
-public sealed class ChartSubjects
+internal sealed class ChartSubjects
 {
     public const int DefaultCacheCapacity = 2048;
 
@@ -26,7 +26,7 @@ public sealed class ChartSubjects
     private Dictionary<uint, GfxObj?> _gfxObjs = [];
     private readonly Lock _lock = new();
 
-    public CompiledBspCache Bsps { get; private set; }
+    internal CompiledBspCache Bsps { get; private set; }
     public int CacheCapacity { get; }
 
     /// <summary>The portal dat the subjects come from.</summary>

@@ -24,7 +24,7 @@ namespace AcShadow.Analysis.Chart;
 /// An object's shapes are asked in order and the count stops at the first that blocks, as the query does.
 /// Counted over an evenly strided sample of the probes (the one the timer takes), averaged per query.
 /// </summary>
-public static class QueryCost
+internal static class QueryCost
 {
     public const int Transform = 5;
 

@@ -6,7 +6,7 @@ using AcShadow.Fixtures.Shapes;
 namespace AcShadow.Analysis.Chart;
 
 /// <summary>Where a prepared shape is, as an entity-space box: BSP parts by their posed polygon vertices, fitted solids by theirs.</summary>
-public static class ShapeBounds
+internal static class ShapeBounds
 {
     public static Bounds Of(PreparedShape shape)
     {

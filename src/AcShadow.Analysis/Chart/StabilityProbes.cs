@@ -20,7 +20,7 @@ namespace AcShadow.Analysis.Chart;
 /// The offset and spacing are metres in entity space. A model that agrees with the reference on these
 /// agrees where a grid is too coarse to look: at the boundary.
 /// </summary>
-public static class StabilityProbes
+internal static class StabilityProbes
 {
     /// <summary>Face lattice points at most, per polygon (a huge polygon is sampled more coarsely).</summary>
     public const int MaxPointsPerPolygon = 2000;

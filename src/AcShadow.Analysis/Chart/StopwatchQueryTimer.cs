@@ -12,7 +12,7 @@ namespace AcShadow.Analysis.Chart;
 /// a delay, and without this the first object charted would be timed on the slow code. Single-threaded;
 /// run nothing else meanwhile for clean numbers.
 /// </summary>
-public sealed class StopwatchQueryTimer(TimeSpan? firstWarmup = null) : IQueryTimer
+internal sealed class StopwatchQueryTimer(TimeSpan? firstWarmup = null) : IQueryTimer
 {
     // Process-wide: what the long first warm-up buys (optimised code) lasts for the process, not the run.
     private static readonly HashSet<string> Warmed = [];

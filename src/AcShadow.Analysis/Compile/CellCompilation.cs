@@ -15,7 +15,7 @@ namespace AcShadow.Analysis.Compile;
 /// in the cell's frame) are where the whole scene is checked around it. <see cref="Physics"/> is null
 /// when the cell structure could not be read (see the diagnostics).
 /// </summary>
-public sealed record CellCompilation(
+internal sealed record CellCompilation(
     EnvCell Cell,
     BspDump? Physics,
     CompiledBsp? Bsp,

@@ -13,7 +13,7 @@ namespace AcShadow.Analysis.Compile;
 /// GfxObjs objects still modelled by retail need (and no others), each indoor cell's PhysicsBSP dump
 /// (cells/0x%08X.bsp.json, in the cell's frame), scene-chart.csv, scene-chart.svg.
 /// </summary>
-public static class CompiledSceneFiles
+internal static class CompiledSceneFiles
 {
     private const string ChartCsvPath = "scene-chart.csv";
     private const string ChartSvgPath = "scene-chart.svg";

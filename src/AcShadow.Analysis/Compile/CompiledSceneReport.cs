@@ -9,7 +9,7 @@ namespace AcShadow.Analysis.Compile;
 /// objects, then the objects inside its cells), each distinct object's compilation, each indoor cell,
 /// and the scene chart's figures.
 /// </summary>
-public sealed record CompiledSceneReport(
+internal sealed record CompiledSceneReport(
     SceneCompileOptions Options,
     LandblockScene Scene,
     IReadOnlyList<PlacedObject> Placed,
@@ -29,7 +29,7 @@ public sealed record CompiledSceneReport(
 /// retail in both) — how many positions, how many agree, the time per mover position of each, and the
 /// counted operations per position of each (<see cref="SceneCost"/>: the same on every run).
 /// </summary>
-public sealed record SceneTotals(int Positions, int Agree, int FalsePass, int FalseBlock, TimingStats Retail, TimingStats Compiled, int RetailShapes, int CompiledShapes)
+internal sealed record SceneTotals(int Positions, int Agree, int FalsePass, int FalseBlock, TimingStats Retail, TimingStats Compiled, int RetailShapes, int CompiledShapes)
 {
     public double RetailOps { get; init; }
     public double CompiledOps { get; init; }

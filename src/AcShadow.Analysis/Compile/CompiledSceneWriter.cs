@@ -17,7 +17,7 @@ namespace AcShadow.Analysis.Compile;
 /// field but <c>evidence.medianNsPerQuery</c> and <c>timing</c> is the same bytes on every run (the
 /// counted costs, <c>opsPerQuery</c> and <c>…OpsPerPosition</c>, included).
 /// </summary>
-public static class CompiledSceneWriter
+internal static class CompiledSceneWriter
 {
     public static byte[] Write(CompiledSceneReport report)
     {
@@ -97,9 +97,9 @@ public static class CompiledSceneWriter
             .Add("cellId", JsonIds.Format(c.Cell.Id))
             .Add("environmentId", JsonIds.Format(c.Cell.EnvironmentFileId))
             .Add("cellStructure", c.Cell.CellStructure)
-            .Add("landblockFrame", new JsonObj().Add("origin", frame.Origin).Add("orientation", JsonShapes.Quaternion(frame.Orientation)))
+            .Add("landblockFrame", new JsonObj().Add("origin", frame.Position).Add("orientation", JsonShapes.Quaternion(frame.Rotation)))
             .Add("worldFrame", new JsonObj().Add("origin", new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)))
-                .Add("orientation", JsonShapes.Quaternion(frame.Orientation)))
+                .Add("orientation", JsonShapes.Quaternion(frame.Rotation)))
             .Add("model", c.Bsp is null ? null : CellCompilation.Model)
             .Add("file", c.Bsp is null ? null : CellBspPath(c.Cell.Id))
             .Add("polygons", c.Bsp?.Polygons.Length ?? 0)
@@ -118,9 +118,9 @@ public static class CompiledSceneWriter
             .Add("cellId", p.CellId is { } cell ? JsonIds.Format(cell) : null)
             .Add("id", JsonIds.Format(placed.Id))
             .Add("kind", placed.Kind.Name())
-            .Add("landblockFrame", new JsonObj().Add("origin", placed.Frame.Origin).Add("orientation", JsonShapes.Quaternion(placed.Frame.Orientation)))
+            .Add("landblockFrame", new JsonObj().Add("origin", placed.Frame.Position).Add("orientation", JsonShapes.Quaternion(placed.Frame.Rotation)))
             .Add("worldFrame", new JsonObj().Add("origin", new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)))
-                .Add("orientation", JsonShapes.Quaternion(placed.Frame.Orientation)))
+                .Add("orientation", JsonShapes.Quaternion(placed.Frame.Rotation)))
             .Add("model", c?.Model);
         var shapes = new JsonArr();
         if (c?.Chosen is { } chosen)

@@ -10,7 +10,7 @@ namespace AcShadow.Analysis.Compile;
 /// never depends on a timing, and a "cheaper kind" of shape that costs more than the BSP on this object
 /// (a hull of many faces against a shallow tree) is never preferred to it.
 /// </summary>
-public static class ModelLadder
+internal static class ModelLadder
 {
     public static IReadOnlyList<IShapeModel> Models { get; } =
     [

@@ -10,7 +10,7 @@ namespace AcShadow.Analysis.Compile;
 /// One model the compiler tried on an object, in the order tried (fewest counted operations per query
 /// first, <see cref="QueryCost"/>), and whether it qualified.
 /// </summary>
-public sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, int FalseBlock, bool Accepted, double OpsPerQuery);
+internal sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, int FalseBlock, bool Accepted, double OpsPerQuery);
 
 /// <summary>
 /// One distinct object of a scene (a Setup or a bare GfxObj, every placement of it shares this) compiled:
@@ -18,7 +18,7 @@ public sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, i
 /// the time per query of the chosen model and of retail over the probes, and their counted cost. <see cref="Model"/> is null when
 /// the object could not be described (see the diagnostics); "none" when nothing of it collides.
 /// </summary>
-public sealed record ObjectCompilation(
+internal sealed record ObjectCompilation(
     uint Id,
     SceneObjectKind Kind,
     string? Model,
@@ -48,5 +48,4 @@ public sealed record ObjectCompilation(
 
     public int FalsePass => Candidates.Count == 0 ? 0 : Candidates[^1].FalsePass;
     public int FalseBlock => Candidates.Count == 0 ? 0 : Candidates[^1].FalseBlock;
-    public bool NeedsBsp => Chosen is not null && Chosen.Shapes.Any(s => s.Bsp is not null);
 }

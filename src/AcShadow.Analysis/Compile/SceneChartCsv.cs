@@ -12,7 +12,7 @@ namespace AcShadow.Analysis.Compile;
 /// operations per query of the chosen model and of retail),
 /// then one per indoor cell (always retail: its probes are where the scene was checked around it).
 /// </summary>
-public static class SceneChartCsv
+internal static class SceneChartCsv
 {
     public const string Header =
         "scope,index,id,model,shapes,probes,agree,agreement_pct,false_pass,false_block,median_ns,p10_ns,p90_ns,retail_median_ns,ops,retail_ops";

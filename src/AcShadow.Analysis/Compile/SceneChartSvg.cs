@@ -11,7 +11,7 @@ namespace AcShadow.Analysis.Compile;
 /// whisker) and how often the two agree. Below: one row per placed object, its chosen model, its time per
 /// query against retail's, and its disagreements over its own probes.
 /// </summary>
-public static class SceneChartSvg
+internal static class SceneChartSvg
 {
     private const double Width = 1100, Left = 330, BarWidth = 560, Row = 24;
 

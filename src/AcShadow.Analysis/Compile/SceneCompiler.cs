@@ -24,7 +24,7 @@ namespace AcShadow.Analysis.Compile;
 /// compiled (<see cref="SceneTotals"/>). Objects one after another, so answers are the same on every
 /// machine and timings do not disturb each other.
 /// </summary>
-public static class SceneCompiler
+internal static class SceneCompiler
 {
     public static CompiledSceneReport Compile(LandblockScene scene, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer, Action<int, int>? progress = null)
     {
@@ -55,13 +55,13 @@ public static class SceneCompiler
     /// </summary>
     public static CellCompilation CompileCell(EnvCell cell, CellStructures structures, ChartOptions chart)
     {
-        var frame = new PartPose(cell.Position.Origin, Normalised(cell.Position.Orientation), 1f);
+        var frame = new PartPose(cell.Position.Position, Normalised(cell.Position.Rotation), 1f);
         var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
         if (geometry is null)
             return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
         var physics = geometry.Physics with { GfxObjId = cell.Id };
         var diagnostics = physics.Diagnostics.Select(d => new Diagnostic(ExportDiagnosticCodes.BspGeometry, d)).ToList();
-        if (!(float.IsFinite(cell.Position.Origin.X) && float.IsFinite(cell.Position.Origin.Y) && float.IsFinite(cell.Position.Origin.Z)) || !float.IsFinite(cell.Position.Orientation.Length()) || cell.Position.Orientation.Length() < 1e-6f)
+        if (!(float.IsFinite(cell.Position.Position.X) && float.IsFinite(cell.Position.Position.Y) && float.IsFinite(cell.Position.Position.Z)) || !float.IsFinite(cell.Position.Rotation.Length()) || cell.Position.Rotation.Length() < 1e-6f)
         {
             diagnostics.Add(new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
             return new CellCompilation(cell, physics, null, frame, [], Bounds.Empty, diagnostics);
@@ -161,7 +161,7 @@ public static class SceneCompiler
         foreach (var p in placed)
         {
             if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;
-            var frame = new PartPose(p.Object.Frame.Origin, Normalised(p.Object.Frame.Orientation), 1f);
+            var frame = new PartPose(p.Object.Frame.Position, Normalised(p.Object.Frame.Rotation), 1f);
             foreach (var probe in c.Probes) positions.Add(probe with { Center = frame.ToEntity(probe.Center) });
         }
         foreach (var cell in cells)
@@ -201,14 +201,14 @@ public static class SceneCompiler
     /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
     /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
     /// </summary>
-    public static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
+    internal static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
     {
         var objects = new List<PlacedQuery>();
         foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
-            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Origin, p.Object.Frame.Orientation, model.Query, center, radius));
+            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Position, p.Object.Frame.Rotation, model.Query, center, radius));
         var cellQueries = cells.Where(c => c.Bsp is not null)
-            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Origin, c.Cell.Position.Orientation))).ToArray();
+            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Position, c.Cell.Position.Rotation))).ToArray();
         return new SceneQuery(objects, cellQueries);
     }
 
@@ -226,7 +226,7 @@ public static class SceneCompiler
     }
 
     /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
-    public static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
+    internal static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
         Query(report.Placed, report.Compiled, report.Cells, pick);
 
     /// <summary>The sphere around an entity-space box, padded so rounding never lets it reject a touching sphere.</summary>

@@ -12,7 +12,7 @@ namespace AcShadow.Analysis.Compile;
 /// inside it the turn into the object's frame and its model's count; then each cell's turn into its frame
 /// and its tree's count; stopping at the first that blocks, as <see cref="SceneQuery"/> does.
 /// </summary>
-public static class SceneCost
+internal static class SceneCost
 {
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample)
@@ -20,7 +20,7 @@ public static class SceneCost
         if (positions.Count == 0 || sample < 1) return 0;
         var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
         {
-            var frame = new PartPose(o.Placed.Object.Frame.Origin, Normalised(o.Placed.Object.Frame.Orientation), 1f);
+            var frame = new PartPose(o.Placed.Object.Frame.Position, Normalised(o.Placed.Object.Frame.Rotation), 1f);
             return (Frame: frame, Bound: frame.ToEntity(o.Center), o.Radius, Counter: new QueryCost.Counter(o.Model.Shapes));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)

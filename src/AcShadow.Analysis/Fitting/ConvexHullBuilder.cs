@@ -13,7 +13,7 @@ namespace AcShadow.Analysis.Fitting;
 /// one plane give a flat hull: the outline wound both ways. Fewer than three non-collinear points, or a set
 /// whose hull float rounding cannot settle (the faces a point sees are not one patch): null.
 /// </summary>
-public static class ConvexHullBuilder
+internal static class ConvexHullBuilder
 {
     /// <summary>Relative tolerance: a point closer than this × the points' extent to a face is on it.</summary>
     public const double RelativeTolerance = 1e-6;

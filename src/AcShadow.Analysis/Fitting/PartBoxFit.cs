@@ -9,7 +9,7 @@ namespace AcShadow.Analysis.Fitting;
 /// principal axes of its physics vertices; on a tie the part's axes (a box GfxObj modelled along its own
 /// axes has its corners at the very vertices, so its faces are the polygons' planes bit for bit).
 /// </summary>
-public static class PartBoxFit
+internal static class PartBoxFit
 {
     public static OrientedBox? Of(IReadOnlyList<Vector3> vertices)
     {

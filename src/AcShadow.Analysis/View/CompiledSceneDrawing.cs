@@ -5,6 +5,7 @@ using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 
@@ -15,7 +16,7 @@ namespace AcShadow.Analysis.View;
 /// 0x020019FF") or an indoor cell ("cell 0xA9B40100", always <see cref="ViewModels.Cells"/>), its id, its
 /// landblock-relative frame and its shapes in that frame.
 /// </summary>
-public sealed record CompiledPlacement(string Name, uint Id, string Model, ViewFrame Frame, IReadOnlyList<ViewShape> Shapes);
+public sealed record CompiledPlacement(string Name, uint Id, string Model, Frame Frame, IReadOnlyList<ViewShape> Shapes);
 
 /// <summary>
 /// compiled-scene.json (what <c>acshadow scene</c> writes) read for drawing: each object's chosen model and
@@ -111,7 +112,7 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
         return dump;
     }
 
-    private static ViewFrame Frame(Vector3 position, Quaternion rotation) => new(position, rotation);
+    private static Frame Frame(Vector3 position, Quaternion rotation) => new(position, rotation);
 
     /// <summary>Every number a drawing uses must be finite: a damaged file is refused rather than drawn as NaN geometry.</summary>
     private static void RequireFinite(string what, params ReadOnlySpan<float> values)

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Text.Json;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Analysis.View;
 
@@ -10,16 +11,16 @@ namespace AcShadow.Analysis.View;
 /// </summary>
 public static class SceneFileFrames
 {
-    public static IReadOnlyDictionary<int, ViewFrame> Read(string sceneJson)
+    public static IReadOnlyDictionary<int, Frame> Read(string sceneJson)
     {
         using var doc = JsonDocument.Parse(sceneJson);
-        var frames = new Dictionary<int, ViewFrame>();
+        var frames = new Dictionary<int, Frame>();
         foreach (var o in doc.RootElement.GetProperty("objects").EnumerateArray())
         {
             var frame = o.GetProperty("landblockFrame");
             var origin = frame.GetProperty("origin");
             var q = frame.GetProperty("orientation");
-            frames[o.GetProperty("index").GetInt32()] = new ViewFrame(
+            frames[o.GetProperty("index").GetInt32()] = new Frame(
                 new Vector3(origin[0].GetSingle(), origin[1].GetSingle(), origin[2].GetSingle()),
                 new Quaternion(q.GetProperty("x").GetSingle(), q.GetProperty("y").GetSingle(), q.GetProperty("z").GetSingle(), q.GetProperty("w").GetSingle()));
         }

@@ -16,7 +16,7 @@ namespace AcShadow.Analysis.View;
 /// scene's fitted solids (part boxes, part hulls) are their faces, one-sided and outward. Cylinders and
 /// spheres get 32 segments around (and a sphere 16 bands), enough to read as round.
 /// </summary>
-public static class ShapeTessellation
+internal static class ShapeTessellation
 {
     private const int SphereBands = UnitCircle.Steps / 2;
 

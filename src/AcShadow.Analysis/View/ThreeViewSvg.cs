@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Analysis.Chart.Output;
+using AcShadow.Fixtures.Geometry;
 using static AcShadow.Analysis.Chart.Output.ChartFormat;
 
 namespace AcShadow.Analysis.View;
@@ -108,7 +109,7 @@ public static class ThreeViewSvg
         svg.Text(x + length + 8, y + 4, $"{F(metres, metres < 1 ? 2 : 0)} m (scale bar, all views)", 11.5);
     }
 
-    private static void Draw(SvgDocument svg, Func<Vector3, (double X, double Y)> project, ViewGroup group, ViewFrame frame, ShapeOutline outline)
+    private static void Draw(SvgDocument svg, Func<Vector3, (double X, double Y)> project, ViewGroup group, Frame frame, ShapeOutline outline)
     {
         var fill = group.Filled ? group.Colour : "none";
         var dash = Dash(group);

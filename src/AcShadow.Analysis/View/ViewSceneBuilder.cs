@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Analysis.View;
@@ -19,7 +20,7 @@ public static class ViewSceneBuilder
 
     public static ViewScene ForSetup(ViewSubject subject, IReadOnlyList<ChartFailure> failures) =>
         Build(JsonIds.Format(subject.Id), $"{subject.Kind} {JsonIds.Format(subject.Id)}", Vector3.Zero,
-            [new ViewPlacement(0, subject, ViewFrame.Identity)], failures, single: true, []);
+            [new ViewPlacement(0, subject, Frame.Identity)], failures, single: true, []);
 
     /// <param name="worldOrigin">The landblock's corner in world coordinates; placements are relative to it.</param>
     public static ViewScene ForLandblock(uint landBlockInfoId, Vector3 worldOrigin, IReadOnlyList<ViewPlacement> placements,
@@ -87,7 +88,7 @@ public static class ViewSceneBuilder
     }
 
     /// <summary>One group per model and kind of failure, with each object's failing probes as markers in its frame.</summary>
-    private static IEnumerable<ViewGroup> FailureGroups(IReadOnlyList<(uint Id, string Name, ViewFrame Frame)> placed, IReadOnlyList<ChartFailure> failures)
+    private static IEnumerable<ViewGroup> FailureGroups(IReadOnlyList<(uint Id, string Name, Frame Frame)> placed, IReadOnlyList<ChartFailure> failures)
     {
         foreach (var (model, falsePass) in failures.Select(f => (f.Model, f.FalsePass)).Distinct()
                      .OrderBy(f => Rank(f.Model)).ThenBy(f => f.Model, StringComparer.Ordinal).ThenBy(f => !f.FalsePass))

@@ -1,6 +1,7 @@
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Analysis.View;
@@ -18,4 +19,4 @@ public sealed record ViewSubject(uint Id, string Kind, IReadOnlyList<ModelShapes
 }
 
 /// <summary>A subject placed in a landblock: its scene index and its frame relative to the landblock's corner.</summary>
-public sealed record ViewPlacement(int Index, ViewSubject Subject, ViewFrame Frame);
+public sealed record ViewPlacement(int Index, ViewSubject Subject, Frame Frame);

@@ -18,6 +18,7 @@ using AcShadow.Files;
 using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
@@ -130,7 +131,7 @@ public static partial class ViewCommand
             var placements = scene.Objects
                 .Select(o => (o, s: Subject(o)))
                 .Where(p => p.s is not null)
-                .Select(p => new ViewPlacement(p.o.Index, p.s!, new ViewFrame(p.o.Frame.Origin, p.o.Frame.Orientation)))
+                .Select(p => new ViewPlacement(p.o.Index, p.s!, new Frame(p.o.Frame.Position, p.o.Frame.Rotation)))
                 .ToArray();
             var c = scene.Coordinates;
             scenes.Add(ViewSceneBuilder.ForLandblock(lb, new Vector3((float)c.WorldOriginX, (float)c.WorldOriginY, 0), placements, failures, [CompiledSceneNote]));

@@ -19,6 +19,4 @@ public sealed record BatchResult(
 {
     /// <summary>Every file including index.json (last), as written to disk.</summary>
     public IEnumerable<OutputFile> AllFiles => Files.Append(new OutputFile(FileFormats.Index.Path, IndexJson));
-
-    public long TotalBytes => Files.Sum(f => (long)f.Content.Length) + IndexJson.LongLength;
 }

@@ -5,6 +5,7 @@ using AcShadow.Fixtures.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Cells;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Formats;
 

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Formats;
 
@@ -13,10 +14,10 @@ public static class CellMatrices
 {
     public static Matrix4x4 World(Frame frame)
     {
-        var q = frame.Orientation;
+        var q = frame.Rotation;
         float xx = q.X * q.X, yy = q.Y * q.Y, zz = q.Z * q.Z;
         float xy = q.X * q.Y, wz = q.Z * q.W, xz = q.Z * q.X, wy = q.Y * q.W, yz = q.Y * q.Z, wx = q.X * q.W;
-        var t = frame.Origin;
+        var t = frame.Position;
         return new Matrix4x4(
             1f - 2f * (yy + zz), 2f * (xy + wz), 2f * (xz - wy), 0f,
             2f * (xy - wz), 1f - 2f * (zz + xx), 2f * (yz + wx), 0f,
@@ -27,7 +28,7 @@ public static class CellMatrices
     public static Matrix4x4 Inverse(Frame frame)
     {
         var m = World(frame);
-        var t = frame.Origin;
+        var t = frame.Position;
         return new Matrix4x4(
             m.M11, m.M21, m.M31, 0f,
             m.M12, m.M22, m.M32, 0f,

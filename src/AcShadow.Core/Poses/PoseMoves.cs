@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Numerics;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Poses;
 
@@ -24,8 +25,8 @@ public static class PoseMoves
         {
             if (PlacementPose(pose.Placement, setup.Parts.Count, i) is not { } p) continue;
             var m = pose.MotionFrames[i];
-            var metres = Vector3.Distance(p.Origin, m.Origin);
-            var dot = Math.Abs((double)Quaternion.Dot(Quaternion.Normalize(p.Orientation), Quaternion.Normalize(m.Orientation)));
+            var metres = Vector3.Distance(p.Position, m.Position);
+            var dot = Math.Abs((double)Quaternion.Dot(Quaternion.Normalize(p.Rotation), Quaternion.Normalize(m.Rotation)));
             var degrees = (float)(2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI);
             if (metres > MovedMetres || degrees > MovedDegrees)
                 moves.Add(string.Create(CultureInfo.InvariantCulture, $"part {i} by {metres:0.###} m and {degrees:0.#} deg"));

@@ -2,6 +2,7 @@ using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
 namespace AcShadow.Core.Poses;

@@ -7,6 +7,7 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
@@ -87,7 +88,7 @@ public static class SceneExporter
             .Add("placedIndex", placed.PlacedIndex)
             .Add("id", JsonIds.Format(placed.Id))
             .Add("kind", placed.Kind.Name())
-            .Add("landblockFrame", FrameJson(JsonArr.Of(placed.Frame.Origin), placed.Frame))
+            .Add("landblockFrame", FrameJson(JsonArr.Of(placed.Frame.Position), placed.Frame))
             .Add("worldFrame", FrameJson(new JsonArr().Add(JsonNum.Of(wx)).Add(JsonNum.Of(wy)).Add(JsonNum.Of(wz)), placed.Frame));
         var diagnostics = new List<Diagnostic>();
         string? file = null;
@@ -150,5 +151,5 @@ public static class SceneExporter
     }
 
     private static JsonObj FrameJson(JsonArr origin, Frame frame) =>
-        new JsonObj().Add("origin", origin).Add("orientation", JsonShapes.Quaternion(frame.Orientation));
+        new JsonObj().Add("origin", origin).Add("orientation", JsonShapes.Quaternion(frame.Rotation));
 }

@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Core.Scenes;

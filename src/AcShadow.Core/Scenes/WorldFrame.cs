@@ -1,5 +1,6 @@
 using System.Globalization;
 using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Scenes;
 
@@ -11,7 +12,7 @@ namespace AcShadow.Core.Scenes;
 public static class WorldFrame
 {
     public static (double X, double Y, double Z) Origin(LandblockCoordinates landblock, Frame frame) =>
-        (Add(landblock.WorldOriginX, frame.Origin.X), Add(landblock.WorldOriginY, frame.Origin.Y), Add(0d, frame.Origin.Z));
+        (Add(landblock.WorldOriginX, frame.Position.X), Add(landblock.WorldOriginY, frame.Position.Y), Add(0d, frame.Position.Z));
 
     private static double Add(double origin, float offset)
     {

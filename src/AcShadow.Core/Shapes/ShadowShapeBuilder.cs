@@ -188,10 +188,10 @@ public static class ShadowShapeBuilder
     private static ShadowShape BspShape(int partIndex, GfxObj gfx, Frame pose, float entityScale, float partScale)
     {
         var root = gfx.PhysicsBsp!.BoundingSphere;
-        var position = pose.Origin * entityScale;
-        var center = position + QuaternionRotation.Rotate(pose.Orientation, root.Center * partScale);
+        var position = pose.Position * entityScale;
+        var center = position + QuaternionRotation.Rotate(pose.Rotation, root.Center * partScale);
         var radius = root.Radius * partScale;
-        return new ShadowShape(ShapeSource.Part, partIndex, gfx.Id, CollisionType.Bsp, position, pose.Orientation, partScale, radius, 0f, new Sphere(center, radius));
+        return new ShadowShape(ShapeSource.Part, partIndex, gfx.Id, CollisionType.Bsp, position, pose.Rotation, partScale, radius, 0f, new Sphere(center, radius));
     }
 
     private static bool IsFinite(ShadowShape s) =>

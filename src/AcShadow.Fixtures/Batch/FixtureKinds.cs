@@ -3,7 +3,7 @@ using AcShadow.Fixtures.Formats;
 namespace AcShadow.Fixtures.Batch;
 
 /// <summary>The names index.json gives a <see cref="FixtureKind"/>: its format's short name.</summary>
-public static class FixtureKinds
+internal static class FixtureKinds
 {
     public static string Name(this FixtureKind kind) => kind.Format().Name;
 

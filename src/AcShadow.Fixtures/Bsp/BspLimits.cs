@@ -6,7 +6,7 @@ namespace AcShadow.Fixtures.Bsp;
 /// the dat reader refuses a tree deeper than this while decoding, and extraction and compilation drop
 /// what lies below it (with a diagnostic) whatever the tree came from.
 /// </summary>
-public static class BspLimits
+internal static class BspLimits
 {
     public const int MaxDepth = 256;
 }

@@ -16,7 +16,7 @@ public enum BspNodeType : uint
     BPnN = 0x42506E4E,
 }
 
-public static class BspNodeTypes
+internal static class BspNodeTypes
 {
     public static string Tag(this BspNodeType type) => new(type.Tag(stackalloc char[4]));
 

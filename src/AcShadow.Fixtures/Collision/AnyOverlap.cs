@@ -3,7 +3,7 @@ using System.Numerics;
 namespace AcShadow.Fixtures.Collision;
 
 /// <summary>An object made of shapes: blocked when any of them blocks (CPhysicsObj::FindObjCollisions over its parts).</summary>
-public sealed class AnyOverlap(IReadOnlyList<ISphereOverlap> shapes) : ISphereOverlap
+internal sealed class AnyOverlap(IReadOnlyList<ISphereOverlap> shapes) : ISphereOverlap
 {
     private readonly ISphereOverlap[] _shapes = [.. shapes];
 

@@ -11,7 +11,7 @@ namespace AcShadow.Fixtures.Collision;
 /// the face's polygon are not); an edge or corner it touches blocks (CPolygon::polygon_hits_sphere_precise
 /// counts the disc reaching the boundary); a centre inside blocks (the solid leaf's centre check).
 /// </summary>
-public sealed class BoxSphereQuery(OrientedBox box) : ISphereOverlap
+internal sealed class BoxSphereQuery(OrientedBox box) : ISphereOverlap
 {
     public OrientedBox Box { get; } = box;
 

@@ -20,7 +20,7 @@ namespace AcShadow.Fixtures.Collision;
 /// It agrees with the reference exactly when <see cref="CompiledBsp.PruningIsConservative"/> holds,
 /// barring a float tie at dist = r − ε on a plane a polygon lies in.
 /// </summary>
-public sealed class BruteForceSphereQuery : ISphereOverlap
+internal sealed class BruteForceSphereQuery : ISphereOverlap
 {
     private readonly CompiledPolygon[] _polygons;
     private readonly CompiledBspNode[] _nodes;

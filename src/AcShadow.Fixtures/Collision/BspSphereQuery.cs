@@ -21,7 +21,7 @@ namespace AcShadow.Fixtures.Collision;
 /// </list>
 /// An absent child is empty space. Thread-safe: queries share only read-only arrays.
 /// </summary>
-public sealed class BspSphereQuery : ISphereOverlap
+internal sealed class BspSphereQuery : ISphereOverlap
 {
     private readonly CompiledPolygon[] _polygons;
     private readonly CompiledBspNode[] _nodes;

@@ -10,7 +10,7 @@ namespace AcShadow.Fixtures.Collision;
 /// rotation) and asked of the cell structure's PhysicsBSP, the same tree walk as a part's
 /// (<see cref="BspSphereQuery"/>). A cell has no broad-phase sphere of its own beyond its tree's root.
 /// </summary>
-public sealed class CellOverlapQuery : ISphereOverlap
+internal sealed class CellOverlapQuery : ISphereOverlap
 {
     private readonly PartPose _frame;
     private readonly BspSphereQuery _bsp;

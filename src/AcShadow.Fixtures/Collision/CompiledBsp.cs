@@ -17,7 +17,7 @@ namespace AcShadow.Fixtures.Collision;
 /// without a finite plane gets the zero plane (both children visited, centre to the positive side); a
 /// non-finite bounding sphere never rejects.
 /// </summary>
-public sealed class CompiledBsp
+internal sealed class CompiledBsp
 {
     public uint GfxObjId { get; }
     public ImmutableArray<CompiledPolygon> Polygons { get; }

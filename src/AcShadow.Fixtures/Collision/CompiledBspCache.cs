@@ -6,7 +6,7 @@ namespace AcShadow.Fixtures.Collision;
 /// Compiles each GfxObj's <see cref="BspDump"/> once, however many parts and models use it. The lookup
 /// answers null for a GfxObj without a PhysicsBSP. Thread-safe.
 /// </summary>
-public sealed class CompiledBspCache(Func<uint, BspDump?> dumps)
+internal sealed class CompiledBspCache(Func<uint, BspDump?> dumps)
 {
     private readonly Dictionary<uint, CompiledBsp?> _compiled = [];
     private readonly Lock _lock = new();

@@ -7,7 +7,7 @@ namespace AcShadow.Fixtures.Collision;
 /// Leaves: the solid flag, how many polygon ids the dat lists (retail's NumPolys, which gates the centre
 /// check), and the range of usable polygons in <see cref="CompiledBsp.LeafPolygons"/>.
 /// </summary>
-public readonly record struct CompiledBspNode(
+internal readonly record struct CompiledBspNode(
     bool IsLeaf,
     Vector3 SphereCenter,
     float SphereRadius,

@@ -11,7 +11,7 @@ namespace AcShadow.Fixtures.Collision;
 /// points into the polygon for the winding the plane was made from. Precomputing them changes no bits:
 /// the same float operations run once instead of per query.
 /// </summary>
-public sealed class CompiledPolygon
+internal sealed class CompiledPolygon
 {
     public int Id { get; }
     public Vector3 Normal { get; }

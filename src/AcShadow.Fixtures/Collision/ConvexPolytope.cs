@@ -12,7 +12,7 @@ namespace AcShadow.Fixtures.Collision;
 /// (<see cref="PolygonSphereTest"/>, CPolygon::polygon_hits_sphere_precise: edges and corners touched count).
 /// A flat polytope (one polygon wound both ways) is never entered, only touched.
 /// </summary>
-public sealed class ConvexPolytope : ISphereOverlap
+internal sealed class ConvexPolytope : ISphereOverlap
 {
     private readonly CompiledPolygon[] _faces;
     private readonly Vector3 _boundCenter;

@@ -7,7 +7,7 @@ namespace AcShadow.Fixtures.Collision;
 /// (CCylSphere::intersects_sphere → collides_with_sphere): the horizontal distance from the axis at most
 /// R − ε + r, and r − ε + h/2 ≥ |h/2 − (z − base z)|. A box in profile: no rounding at the rims.
 /// </summary>
-public static class CylinderSphereTest
+internal static class CylinderSphereTest
 {
     public static bool Touches(Vector3 baseCenter, float cylinderRadius, float height, Vector3 center, float radius)
     {

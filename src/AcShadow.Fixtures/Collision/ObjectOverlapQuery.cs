@@ -7,12 +7,11 @@ namespace AcShadow.Fixtures.Collision;
 /// <summary>
 /// "Does a query sphere at entity-space centre c with radius r overlap the object?" over a
 /// <see cref="ShadowShapeSet"/>: blocked when any shape blocks. BSP shapes move the sphere into the part's
-/// space (<see cref="PartPose.ToLocal"/>) and ask the part's tree (<see cref="BspSphereQuery"/>, or the
-/// brute force); Cylinder shapes use <see cref="CylinderSphereTest"/> with the base at LocalPosition;
+/// space (<see cref="PartPose.ToLocal"/>) and ask the part's tree (<see cref="BspSphereQuery"/>); Cylinder shapes use <see cref="CylinderSphereTest"/> with the base at LocalPosition;
 /// Sphere shapes use <see cref="SphereSphereTest"/>. A shape that cannot be tested (no PhysicsBSP dump, NaN
 /// in its frame, a scale that is zero or not finite) is skipped with a diagnostic naming it.
 /// </summary>
-public sealed class ObjectOverlapQuery : ISphereOverlap
+internal sealed class ObjectOverlapQuery : ISphereOverlap
 {
     private readonly IShapeCheck[] _checks;
 
@@ -26,7 +25,7 @@ public sealed class ObjectOverlapQuery : ISphereOverlap
         Diagnostics = diagnostics;
     }
 
-    public static ObjectOverlapQuery Create(IEnumerable<ShadowShape> shapes, Func<uint, CompiledBsp?> bsps, BspEngine engine = BspEngine.Reference)
+    public static ObjectOverlapQuery Create(IEnumerable<ShadowShape> shapes, Func<uint, CompiledBsp?> bsps)
     {
         var log = new DiagnosticLog();
         var checks = new List<IShapeCheck>();
@@ -46,7 +45,7 @@ public sealed class ObjectOverlapQuery : ISphereOverlap
                     if (Prepare(shape, name, bsps, log) is not { } part) continue;
                     var id = part.Bsp!.GfxObjId;
                     if (!queries.TryGetValue(id, out var query))
-                        queries[id] = query = engine == BspEngine.Reference ? new BspSphereQuery(part.Bsp) : new BruteForceSphereQuery(part.Bsp);
+                        queries[id] = query = new BspSphereQuery(part.Bsp);
                     checks.Add(new BspCheck(part.Pose, query));
                     prepared.Add(part);
                     break;
@@ -63,8 +62,8 @@ public sealed class ObjectOverlapQuery : ISphereOverlap
         return new ObjectOverlapQuery([.. checks], prepared, log.ToList());
     }
 
-    public static ObjectOverlapQuery Create(ShadowShapeSet set, Func<uint, CompiledBsp?> bsps, BspEngine engine = BspEngine.Reference) =>
-        Create(set.Shapes, bsps, engine);
+    public static ObjectOverlapQuery Create(ShadowShapeSet set, Func<uint, CompiledBsp?> bsps) =>
+        Create(set.Shapes, bsps);
 
     public bool Overlaps(Vector3 center, float radius)
     {

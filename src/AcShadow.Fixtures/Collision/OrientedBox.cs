@@ -7,7 +7,7 @@ namespace AcShadow.Fixtures.Collision;
 /// A box in a part's own space: its centre, its axes (a unit quaternion turning the box's x, y, z onto
 /// them) and its half extents along them (zero for a flat box). The part's pose places it in the entity.
 /// </summary>
-public readonly record struct OrientedBox(Vector3 Center, Quaternion Axes, Vector3 HalfExtents)
+internal readonly record struct OrientedBox(Vector3 Center, Quaternion Axes, Vector3 HalfExtents)
 {
     /// <summary>Corner i: bit 0 picks +x, bit 1 +y, bit 2 +z.</summary>
     public Vector3 Corner(int i)

@@ -4,7 +4,7 @@ using AcShadow.Fixtures.Geometry;
 namespace AcShadow.Fixtures.Collision;
 
 /// <summary>A posed part: where its GfxObj sits in entity space, how it is turned, its uniform scale.</summary>
-public readonly record struct PartPose(Vector3 Position, Quaternion Rotation, float Scale)
+internal readonly record struct PartPose(Vector3 Position, Quaternion Rotation, float Scale)
 {
     /// <summary>
     /// The query sphere in the part's own space (CSpherePath::CacheLocalSpaceSphere): offset from the part,

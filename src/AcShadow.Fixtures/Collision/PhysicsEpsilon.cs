@@ -4,7 +4,7 @@ namespace AcShadow.Fixtures.Collision;
 /// Retail's collision tolerance (PhysicsGlobals EPSILON = 0.0002 m). Splitting-plane reach, polygon contact
 /// and cylinder/sphere contact all shrink the query sphere by it, so a sphere only grazing a surface is clear.
 /// </summary>
-public static class PhysicsEpsilon
+internal static class PhysicsEpsilon
 {
     public const float Value = 0.0002f;
 }

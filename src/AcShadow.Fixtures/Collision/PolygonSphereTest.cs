@@ -15,7 +15,7 @@ namespace AcShadow.Fixtures.Collision;
 /// </list>
 /// Exact for convex polygons; for non-convex ones the edge order decides, as in retail.
 /// </summary>
-public static class PolygonSphereTest
+internal static class PolygonSphereTest
 {
     public static bool Touches(CompiledPolygon polygon, Vector3 center, float radius)
     {

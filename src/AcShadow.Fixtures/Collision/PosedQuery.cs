@@ -7,7 +7,7 @@ namespace AcShadow.Fixtures.Collision;
 /// (<see cref="PartPose.ToLocal"/>, CSpherePath::CacheLocalSpaceSphere), so ε applies in part units as it
 /// does for the part's BSP.
 /// </summary>
-public sealed class PosedQuery(PartPose pose, ISphereOverlap partQuery) : ISphereOverlap
+internal sealed class PosedQuery(PartPose pose, ISphereOverlap partQuery) : ISphereOverlap
 {
     public PartPose Pose { get; } = pose;
     public ISphereOverlap PartQuery { get; } = partQuery;

@@ -9,7 +9,7 @@ namespace AcShadow.Fixtures.Collision;
 /// modelled by a fitted solid instead carries it, in part space: <see cref="Box"/> (its faces also in
 /// <see cref="Polytope"/>) or <see cref="Polytope"/> alone (a convex hull).
 /// </summary>
-public sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose, CompiledBsp? Bsp)
+internal sealed record PreparedShape(ShadowShape Shape, string Name, PartPose Pose, CompiledBsp? Bsp)
 {
     public OrientedBox? Box { get; init; }
     public ConvexPolytope? Polytope { get; init; }

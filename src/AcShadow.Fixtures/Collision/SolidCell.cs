@@ -5,4 +5,4 @@ namespace AcShadow.Fixtures.Collision;
 /// first, which child the path takes. The brute force tests a centre against every solid cell this way,
 /// without descending the tree.
 /// </summary>
-public sealed record SolidCell(int Leaf, IReadOnlyList<int> Ancestors, IReadOnlyList<bool> TakesPos);
+internal sealed record SolidCell(int Leaf, IReadOnlyList<int> Ancestors, IReadOnlyList<bool> TakesPos);

@@ -3,7 +3,7 @@ using System.Numerics;
 namespace AcShadow.Fixtures.Collision;
 
 /// <summary>A Setup sphere against a query sphere, retail's placement test (CSphere::intersects_sphere): |Δ|² ≤ (R + r − ε)².</summary>
-public static class SphereSphereTest
+internal static class SphereSphereTest
 {
     public static bool Touches(Vector3 sphereCenter, float sphereRadius, Vector3 center, float radius)
     {

@@ -7,7 +7,7 @@ namespace AcShadow.Fixtures.Collision;
 /// How far a point is from geometry, in metres: the measure "how close to the boundary" a probe is. Not a
 /// retail function; used to rank disagreements and to keep float noise out of invariance tests.
 /// </summary>
-public static class SurfaceDistance
+internal static class SurfaceDistance
 {
     /// <summary>
     /// Distance from a point to a polygon: to its plane when the point's projection falls inside every

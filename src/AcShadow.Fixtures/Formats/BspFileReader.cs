@@ -8,7 +8,7 @@ namespace AcShadow.Fixtures.Formats;
 /// Reads an "acshadow.bsp/1" file back into a <see cref="BspDump"/>, so consumers of the fixtures query
 /// exactly what the tool computed. Malformed input is a <see cref="FormatException"/> naming the field.
 /// </summary>
-public static class BspFileReader
+internal static class BspFileReader
 {
     public static BspDump Read(string json)
     {

@@ -10,7 +10,7 @@ namespace AcShadow.Fixtures.Formats;
 /// Reads an "acshadow.cell/1" file into a <see cref="CellFile"/>. Malformed input is a
 /// <see cref="FormatException"/> naming the field.
 /// </summary>
-public static class CellFileReader
+internal static class CellFileReader
 {
     public static CellFile Read(string json)
     {
@@ -18,8 +18,6 @@ public static class CellFileReader
         var root = doc.RootElement;
         FormatCheck.Require(root, FileFormats.Cell, "cell file");
         var cellId = Id(root, "cellId");
-        var frame = Prop(root, "landblockFrame");
-        var world = Prop(root, "worldFrame");
         var physics = BspFileReader.ReadBody(Prop(root, "physics"), cellId, []);
         var portals = Arr(root, "portals").Select(p =>
         {
@@ -32,17 +30,14 @@ public static class CellFileReader
         var visible = Arr(root, "visibleCells").Select(v => JsonIds.TryParse(v.GetString(), out var id) ? id : throw new FormatException("visibleCells holds a value that is not a hex id")).ToArray();
         var objects = Arr(root, "objects").Select(o =>
         {
-            var landblock = Prop(o, "landblockFrame");
             var file = Prop(o, "file");
-            return new CellObject(Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(Str(o, "kind")),
-                Vec(Prop(landblock, "origin")), Quat(Prop(landblock, "orientation")),
-                Vec(Prop(Prop(o, "worldFrame"), "origin")),
+            return new PlacedObject(Int(o, "index"), Id(o, "id"), SceneObjectKinds.Parse(Str(o, "kind")),
+                FrameOf(Prop(o, "landblockFrame")), FrameOf(Prop(o, "worldFrame")),
                 file.ValueKind == JsonValueKind.Null ? null : file.GetString(),
                 o.TryGetProperty("shapes", out var s) ? s.EnumerateArray().Select(ShadowFileReader.ReadShape).ToArray() : []);
         }).ToArray();
         return new CellFile(cellId, Id(root, "environmentId"), Int(root, "cellStructure"), (uint)Prop(root, "flags").GetInt64(),
             Prop(root, "seenOutside").GetBoolean(),
-            Vec(Prop(frame, "origin")), Quat(Prop(frame, "orientation")),
-            Vec(Prop(world, "origin")), physics, portals, visible, objects);
+            FrameOf(Prop(root, "landblockFrame")), FrameOf(Prop(root, "worldFrame")), physics, portals, visible, objects);
     }
 }

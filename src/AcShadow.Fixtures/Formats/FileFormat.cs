@@ -4,8 +4,7 @@ namespace AcShadow.Fixtures.Formats;
 
 /// <summary>
 /// One kind of file acshadow writes: its short name, its <c>format</c> value (name and version), where it
-/// goes in an output folder and what it holds. Its JSON
-/// Schema's <c>$id</c> and file name follow from <see cref="Format"/>.
+/// goes in an output folder and what it holds. Its JSON Schema's <c>$id</c> follows from <see cref="Format"/>.
 /// </summary>
 /// <param name="Name">The short name: index.json's <c>kind</c> for the files a batch lists.</param>
 /// <param name="Format">The file's <c>format</c> value: name, slash, version.</param>
@@ -14,15 +13,12 @@ namespace AcShadow.Fixtures.Formats;
 /// wherever <c>--out</c> says has its option in parentheses instead.
 /// </param>
 /// <param name="Description">What one file holds, in a line.</param>
-public sealed record FileFormat(string Name, string Format, string PathPattern, string Description)
+internal sealed record FileFormat(string Name, string Format, string PathPattern, string Description)
 {
     private const string IdPlaceholder = "0x%08X";
 
     /// <summary>The schema's <c>$id</c>: the format with its version after a dash (urn:acshadow:schema:acshadow.bsp-1).</summary>
     public string SchemaId => "urn:acshadow:schema:" + Format.Replace('/', '-');
-
-    /// <summary>The schema's file under schemas/ (acshadow.bsp-1.schema.json).</summary>
-    public string SchemaFile => Format.Replace('/', '-') + ".schema.json";
 
     /// <summary>The file of a dat id, relative to the output folder: setups/0x020019FF.shadow.json.</summary>
     /// <exception cref="InvalidOperationException">The format's files are not named by an id.</exception>

@@ -5,7 +5,7 @@ namespace AcShadow.Fixtures.Formats;
 /// writes, where its files go, its schema. docs/formats.md describes the fields; `acshadow formats` prints
 /// this list.
 /// </summary>
-public static class FileFormats
+internal static class FileFormats
 {
     public static FileFormat Shadow { get; } = new("shadow", "acshadow.shadow/2", "setups/0x%08X.shadow.json",
         "one Setup's collision shapes (the seed's ShadowShape fields), the pose its parts are in and the Setup facts behind them");

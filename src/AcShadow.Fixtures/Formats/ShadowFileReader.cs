@@ -11,7 +11,7 @@ namespace AcShadow.Fixtures.Formats;
 /// reference) works from exactly what the tool wrote. The Setup facts block is informational and not
 /// read back.
 /// </summary>
-public static class ShadowFileReader
+internal static class ShadowFileReader
 {
     public static ShadowShapeSet Read(string json)
     {

@@ -9,7 +9,7 @@ namespace AcShadow.Fixtures.Geometry;
 /// Written as explicit scalar float arithmetic in a fixed order so every machine gets the same bits
 /// (no SIMD reassociation, no fused multiply-add).
 /// </summary>
-public static class PolygonPlane
+internal static class PolygonPlane
 {
     /// <summary>The plane, or null when the fan's normal has zero length (collinear or repeated vertices).</summary>
     public static Plane? Compute(IReadOnlyList<Vector3> vertices)

@@ -6,7 +6,7 @@ namespace AcShadow.Fixtures.Geometry;
 /// Rotating by a quaternion in explicit scalar float arithmetic, so results are bit-identical on every
 /// machine (System.Numerics may vectorise and reassociate).
 /// </summary>
-public static class QuaternionRotation
+internal static class QuaternionRotation
 {
     /// <summary>v' = v + w·t + q×t with t = 2·(q×v), for a unit quaternion q.</summary>
     public static Vector3 Rotate(Quaternion q, Vector3 v)

@@ -36,6 +36,9 @@ internal static class JsonFields
 
     public static Quaternion Quat(JsonElement e) => new(Float(e, "x"), Float(e, "y"), Float(e, "z"), Float(e, "w"));
 
+    /// <summary>A frame: {origin, orientation}.</summary>
+    public static Frame FrameOf(JsonElement e) => new(Vec(Prop(e, "origin")), Quat(Prop(e, "orientation")));
+
     /// <summary>{normal, d}, or null (a degenerate polygon's plane).</summary>
     public static Plane? OptionalPlane(JsonElement e) =>
         e.ValueKind == JsonValueKind.Null ? null : new Plane(Vec(Prop(e, "normal")), Float(e, "d"));

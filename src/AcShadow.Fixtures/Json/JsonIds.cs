@@ -3,7 +3,7 @@ using System.Globalization;
 namespace AcShadow.Fixtures.Json;
 
 /// <summary>Dat ids in the formats are "0x%08X" strings.</summary>
-public static class JsonIds
+internal static class JsonIds
 {
     public static string Format(uint id) => "0x" + id.ToString("X8", CultureInfo.InvariantCulture);
 

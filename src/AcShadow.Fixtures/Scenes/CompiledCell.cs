@@ -1,6 +1,6 @@
-using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Fixtures.Scenes;
 
 /// <summary>One indoor cell of a compiled scene: always its retail tree, in the cell's landblock-relative frame.</summary>
-public sealed record CompiledCell(uint CellId, string Model, Vector3 LandblockPosition, Quaternion LandblockRotation);
+internal sealed record CompiledCell(uint CellId, string Model, Frame LandblockFrame);

@@ -8,7 +8,7 @@ namespace AcShadow.Fixtures.Scenes;
 /// rotation; the client turns the moving sphere into each object's frame), its collision in entity
 /// space, and an entity-space sphere around everything it can block, for the broad phase.
 /// </summary>
-public sealed class PlacedQuery
+internal sealed class PlacedQuery
 {
     private readonly Vector3 _boundInLandblock;
 

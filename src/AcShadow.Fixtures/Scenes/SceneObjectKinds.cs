@@ -1,7 +1,7 @@
 namespace AcShadow.Fixtures.Scenes;
 
 /// <summary>The names scene files give a <see cref="SceneObjectKind"/>: "setup", "gfxObj", "other".</summary>
-public static class SceneObjectKinds
+internal static class SceneObjectKinds
 {
     public static string Name(this SceneObjectKind kind) => kind switch
     {

@@ -10,7 +10,7 @@ namespace AcShadow.Fixtures.Scenes;
 /// Landblock-relative, not world, coordinates: float32 world coordinates lose millimetres at landblock
 /// magnitudes, which is why the dat stores frames this way.
 /// </summary>
-public sealed class SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList<SceneCell>? cells = null) : ISphereOverlap
+internal sealed class SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList<SceneCell>? cells = null) : ISphereOverlap
 {
     private readonly PlacedQuery[] _objects = [.. objects];
     private readonly SceneCell[] _cells = [.. cells ?? []];
@@ -28,10 +28,6 @@ public sealed class SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList
             if (c.Query.Overlaps(center, radius)) return true;
         return false;
     }
-
-    /// <summary>The objects a sphere touches, by scene index.</summary>
-    public IEnumerable<int> Touching(Vector3 center, float radius) =>
-        _objects.Where(o => o.Overlaps(center, radius)).Select(o => o.Index);
 
     /// <summary>The cells whose walls, floors or ceilings a sphere touches.</summary>
     public IEnumerable<uint> TouchingCells(Vector3 center, float radius) =>

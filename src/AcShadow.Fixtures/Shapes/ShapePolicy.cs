@@ -19,7 +19,7 @@ public enum ShapePolicy
     Union,
 }
 
-public static class ShapePolicies
+internal static class ShapePolicies
 {
     public static string Name(this ShapePolicy policy) => policy switch
     {

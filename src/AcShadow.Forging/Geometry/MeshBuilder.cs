@@ -33,13 +33,6 @@ public sealed class MeshBuilder
         return this;
     }
 
-    /// <summary>A polygon from existing vertex ids, as given (for deliberately odd polygons).</summary>
-    public MeshBuilder PolygonByIds(IReadOnlyList<int> ids, string? sidesType = null)
-    {
-        _polygons.Add(new PolygonSpec { Vertices = ids.ToArray(), SidesType = sidesType });
-        return this;
-    }
-
     /// <summary>
     /// A grid of quads: cell (i, j) has corners point(i, j), point(i+1, j), point(i+1, j+1), point(i, j+1),
     /// so its normal is along (∂u × ∂v). <paramref name="skip"/> leaves holes (door openings).

@@ -5,6 +5,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Json;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Forging.Spec;
@@ -66,7 +67,7 @@ public static class HookValidator
                 w.WritePackedDataId(id, AnimationHookField.GfxObjBase);
                 break;
             case AnimationHookFieldKind.Vector3: w.WriteVector3(Vector(value, at)); break;
-            case AnimationHookFieldKind.Frame: Frame(value, at).Write(w); break;
+            case AnimationHookFieldKind.Frame: w.WriteFrame(Frame(value, at)); break;
             default: throw new ArgumentOutOfRangeException(nameof(field), field.Kind, null);
         }
     }

@@ -38,16 +38,6 @@ public sealed class LayeringTests
         ["acshadow"] = Layers.Of("AcShadow.Cli", "Infrastructure", "Conventions", "Terminal", "Output", "Commands", ""),
     };
 
-    /// <summary>
-    /// Uses that point up, each kept only because removing it moves a type of the fixtures package's public
-    /// API: CompiledScene (Scenes) reads its file by the FileFormats vocabulary (Formats), while Formats'
-    /// CellFileReader reads the SceneObjectKind that Cells records. Left for the package's API change.
-    /// </summary>
-    private static readonly HashSet<(string From, string To)> KnownUpward =
-    [
-        ("AcShadow.Fixtures.Scenes", "AcShadow.Fixtures.Formats"),
-    ];
-
     public static TheoryData<string> Layered() => [.. Orders.Keys];
 
     [Theory]
@@ -63,13 +53,9 @@ public sealed class LayeringTests
             foreach (var (to, uses) in graph.Uses(from))
             {
                 var upward = Array.IndexOf(order, to) > Array.IndexOf(order, from);
-                if (upward && !KnownUpward.Contains((from, to)))
+                if (upward)
                     problems.Add($"{from} -> {to}, which is above it: {Example(uses)}");
             }
-
-        foreach (var (from, to) in KnownUpward.Where(e => order.Contains(e.From)))
-            if (!graph.Namespaces.Contains(from) || !graph.Uses(from).ContainsKey(to))
-                problems.Add($"{from} no longer uses {to}: remove the pair from {nameof(KnownUpward)}");
 
         Assert.True(problems.Count == 0, $"{assembly}:\n" + string.Join("\n", problems));
     }
@@ -98,7 +84,7 @@ public sealed class LayeringTests
             foreach (var imported in lines.Select(l => UsingOrNamespace("using static ", l) ?? UsingOrNamespace("using ", l)).OfType<string>())
             {
                 var target = order.Where(n => imported == n || imported.StartsWith(n + ".", StringComparison.Ordinal)).MaxBy(n => n.Length);
-                if (target is not null && Array.IndexOf(order, target) > Array.IndexOf(order, own) && !KnownUpward.Contains((own, target)))
+                if (target is not null && Array.IndexOf(order, target) > Array.IndexOf(order, own))
                     upward.Add($"{relative} ({own}) imports {imported}, which is above it");
             }
         }
@@ -145,11 +131,11 @@ public sealed class LayeringTests
         Assert.DoesNotContain("AcShadow.Cli", project, StringComparison.Ordinal);
     }
 
-    /// <summary>The graph's cycles, one per strongly connected group of namespaces, the known upward uses left out.</summary>
+    /// <summary>The graph's cycles, one per strongly connected group of namespaces.</summary>
     internal static IReadOnlyList<IReadOnlyList<string>> Cycles(NamespaceGraph graph)
     {
         IEnumerable<string> Next(string from) =>
-            graph.Uses(from).Keys.Where(to => graph.Namespaces.Contains(to) && !KnownUpward.Contains((from, to)));
+            graph.Uses(from).Keys.Where(graph.Namespaces.Contains);
 
         // Tarjan's strongly connected components; each group of two or more holds a cycle.
         var index = new Dictionary<string, int>(StringComparer.Ordinal);

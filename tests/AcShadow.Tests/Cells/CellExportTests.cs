@@ -51,9 +51,9 @@ public class CellExportTests
         Assert.Equal(0x0D000100u, cell.EnvironmentId);
         Assert.Equal(0, cell.CellStructure);
         Assert.True(cell.SeenOutside);
-        Assert.Equal(new Vector3(60, 60, 12), cell.LandblockOrigin);
+        Assert.Equal(new Vector3(60, 60, 12), cell.LandblockFrame.Position);
         // Landblock 0xA9B4 starts at (0xA9 * 192, 0xB4 * 192) = (32448, 34560) in the world.
-        Assert.Equal(new Vector3(32508, 34620, 12), cell.WorldOrigin);
+        Assert.Equal(new Vector3(32508, 34620, 12), cell.WorldFrame.Position);
         Assert.Equal(9, cell.Physics.Polygons.Count);
         Assert.All(cell.Physics.Polygons, p => Assert.NotNull(p.Plane));
 
@@ -74,7 +74,7 @@ public class CellExportTests
         Assert.Equal(0x02003300u, inside.Id);
         Assert.Equal(SceneObjectKind.Setup, inside.Kind);
         Assert.Equal("setups/0x02003300.shadow.json", inside.File);
-        Assert.Equal(new Vector3(62, 57.5f, 12), inside.LandblockPosition);
+        Assert.Equal(new Vector3(62, 57.5f, 12), inside.LandblockFrame.Position);
     }
 
     /// <summary>
@@ -174,9 +174,9 @@ public class CellExportTests
         var world = CellMatrices.World(frame);
         var inverse = CellMatrices.Inverse(frame);
         var p = new Vector3(1.5f, -2, 3);
-        Assert.True(Vector3.Distance(Vector3.Transform(p, world), Vector3.Transform(p, frame.Orientation) + frame.Origin) < 1e-5f);
+        Assert.True(Vector3.Distance(Vector3.Transform(p, world), Vector3.Transform(p, frame.Rotation) + frame.Position) < 1e-5f);
         Assert.True(Vector3.Distance(Vector3.Transform(Vector3.Transform(p, world), inverse), p) < 1e-5f);
-        var numerics = Matrix4x4.CreateFromQuaternion(frame.Orientation) * Matrix4x4.CreateTranslation(frame.Origin);
+        var numerics = Matrix4x4.CreateFromQuaternion(frame.Rotation) * Matrix4x4.CreateTranslation(frame.Position);
         for (var i = 0; i < 4; i++)
             for (var j = 0; j < 4; j++)
                 Assert.True(MathF.Abs(numerics[i, j] - world[i, j]) < 1e-6f, $"M{i + 1}{j + 1}");

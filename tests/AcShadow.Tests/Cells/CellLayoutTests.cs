@@ -45,8 +45,8 @@ public class CellLayoutTests
         Assert.Equal([(ushort)0x32, (ushort)0x33], cell.Surfaces);
         Assert.Equal(0x0D000123u, cell.EnvironmentFileId);
         Assert.Equal(4, cell.CellStructure);
-        Assert.Equal(new Vector3(1, 2, 3), cell.Position.Origin);
-        Assert.Equal(new Quaternion(0.5f, 0.5f, 0.5f, 0.5f), cell.Position.Orientation);
+        Assert.Equal(new Vector3(1, 2, 3), cell.Position.Position);
+        Assert.Equal(new Quaternion(0.5f, 0.5f, 0.5f, 0.5f), cell.Position.Rotation);
         var portal = Assert.Single(cell.Portals);
         Assert.Equal(new CellPortal(PortalFlags.ExactMatch | PortalFlags.PortalSide, 7, 0xFFFF, 2), portal);
         Assert.True(portal.LeadsOutside);
@@ -54,7 +54,7 @@ public class CellLayoutTests
         Assert.Equal(0xA9B40106u, cell.Sibling(cell.VisibleCells[2]));
         var stab = Assert.Single(cell.StaticObjects);
         Assert.Equal(0x02003300u, stab.Id);
-        Assert.Equal(new Vector3(4, 5, 6), stab.Frame.Origin);
+        Assert.Equal(new Vector3(4, 5, 6), stab.Frame.Position);
         Assert.Equal(0xBEEFu, cell.RestrictionObj);
     }
 

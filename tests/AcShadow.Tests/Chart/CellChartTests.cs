@@ -37,7 +37,7 @@ public class CellChartTests
         Assert.Contains(blocked, i => bsp.Polygons.Any(p => PolygonSphereTest.Touches(p, chart.Cell.Probes[i].Center, chart.Cell.Probes[i].Radius)));
 
         // Answered as the scene asks a cell: moved into the landblock, then through the cell's frame.
-        var query = new CellOverlapQuery(chart.Cell.Physics!, cell.Position.Origin, cell.Position.Orientation);
+        var query = new CellOverlapQuery(chart.Cell.Physics!, cell.Position.Position, cell.Position.Rotation);
         for (var i = 0; i < chart.Cell.Probes.Length; i += 97)
             Assert.Equal(query.Overlaps(chart.Cell.Frame.ToEntity(chart.Cell.Probes[i].Center), chart.Cell.Probes[i].Radius), chart.Answers[i]);
 

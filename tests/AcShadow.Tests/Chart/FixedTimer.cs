@@ -4,7 +4,7 @@ using AcShadow.Analysis.Chart.Models;
 namespace AcShadow.Tests.Chart;
 
 /// <summary>A timer that measures nothing: fixed nanoseconds per model, so chart files are byte-comparable.</summary>
-public sealed class FixedTimer : IQueryTimer
+internal sealed class FixedTimer : IQueryTimer
 {
     public static readonly IReadOnlyDictionary<string, double> Default = new Dictionary<string, double>
     {

@@ -8,7 +8,7 @@ using AcShadow.Forging;
 namespace AcShadow.Tests.Chart;
 
 /// <summary>Chart runs on the built-in sample with the fixed timer, computed once per options.</summary>
-public static class SampleChart
+internal static class SampleChart
 {
     internal static readonly Lazy<ChartSubjects> Subjects = new(() =>
     {
@@ -54,7 +54,7 @@ public static class SampleChart
 }
 
 /// <summary>One chart run's options, models (the reference first), charts in subject order, and files in the order a run finishes them.</summary>
-public sealed record SampleRun(ChartOptions Options, IReadOnlyList<string> Models, IReadOnlyList<ObjectChart> Objects, IReadOnlyList<OutputFile> Files)
+internal sealed record SampleRun(ChartOptions Options, IReadOnlyList<string> Models, IReadOnlyList<ObjectChart> Objects, IReadOnlyList<OutputFile> Files)
 {
     public string Reference => Models[0];
 

@@ -8,7 +8,7 @@ namespace AcShadow.Tests.Collision;
 /// r ± 1e-4 and at the contact threshold r − ε ± 1e-5 from polygon faces, edges and vertices, and on and
 /// beside splitting planes. Seeded: every run draws the same probes.
 /// </summary>
-public static class StressProbes
+internal static class StressProbes
 {
     public static List<(Vector3 Center, float Radius, string Kind)> For(CompiledBsp bsp, int count, int seed)
     {

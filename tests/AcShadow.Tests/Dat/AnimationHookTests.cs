@@ -110,8 +110,8 @@ public class AnimationHookTests
         foreach (var (key, hooks) in placements)
         {
             w.WriteUInt32(key);
-            Frame.Identity.Write(w);
-            new Frame(new Vector3(0, 0, 1), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 0.5f)).Write(w);
+            w.WriteFrame(Frame.Identity);
+            w.WriteFrame(new Frame(new Vector3(0, 0, 1), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 0.5f)));
             w.WriteUInt32((uint)hooks.Length);
             foreach (var hook in hooks) w.WriteBytes(hook.Bytes);
         }

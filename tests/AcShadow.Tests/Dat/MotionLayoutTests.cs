@@ -69,13 +69,13 @@ public class MotionLayoutTests
         Assert.Null(a.PosFrames);
         Assert.Equal(2, a.PartFrames.Count);
         var first = a.PartFrames[0];
-        Assert.Equal(new Vector3(0, 0, 1), Assert.Single(first.Frames).Origin);
+        Assert.Equal(new Vector3(0, 0, 1), Assert.Single(first.Frames).Position);
         Assert.Equal(
             [(AnimationHookType.ReplaceObject, 1, "partIndex=0 gfxObjId=0x0100C0DE"), (AnimationHookType.Ethereal, -1, "ethereal=true")],
             first.Hooks.Select(h => (h.Type, h.Direction, h.FieldText())));
         var second = Assert.Single(a.PartFrames[1].Frames);
-        Assert.Equal(new Vector3(0, 0, 2), second.Origin);
-        Assert.Equal(new Quaternion(0, 0, 0.70710677f, 0.70710677f), second.Orientation);
+        Assert.Equal(new Vector3(0, 0, 2), second.Position);
+        Assert.Equal(new Quaternion(0, 0, 0.70710677f, 0.70710677f), second.Rotation);
         Assert.Empty(a.PartFrames[1].Hooks);
 
         var w = new DatBinaryWriter();
@@ -121,12 +121,12 @@ public class MotionLayoutTests
         var a = Animation.Read(new DatBinaryReader(Anim));
         Assert.Equal(0x03000100u, a.Id);
         Assert.Equal(2, a.NumParts);
-        Assert.Equal(new Vector3(1, 0, 0), Assert.Single(a.PosFrames!).Origin);
+        Assert.Equal(new Vector3(1, 0, 0), Assert.Single(a.PosFrames!).Position);
         var frame = Assert.Single(a.PartFrames);
-        Assert.Equal(new Vector3(0, -0.1f, 0), frame.Frames[0].Origin);
-        Assert.Equal(Quaternion.Identity, frame.Frames[0].Orientation);
-        Assert.Equal(new Vector3(0, 0, 2), frame.Frames[1].Origin);
-        Assert.Equal(new Quaternion(0, 0, 1, 0), frame.Frames[1].Orientation);
+        Assert.Equal(new Vector3(0, -0.1f, 0), frame.Frames[0].Position);
+        Assert.Equal(Quaternion.Identity, frame.Frames[0].Rotation);
+        Assert.Equal(new Vector3(0, 0, 2), frame.Frames[1].Position);
+        Assert.Equal(new Quaternion(0, 0, 1, 0), frame.Frames[1].Rotation);
         Assert.Empty(frame.Hooks);
 
         var w = new DatBinaryWriter();

@@ -33,7 +33,7 @@ public class FixtureLibraryTests
         // Each placed object blocks a small sphere at the world position of its first shape's bounding-sphere centre.
         foreach (var (o, p) in scene.Objects.Where(o => o.File is not null).Zip(placed))
         {
-            Assert.Equal(o.WorldPosition, p.Position);
+            Assert.Equal(o.WorldFrame.Position, p.Position);
             var shape = p.Fixture.Shadow.Shapes.First(s => s.LocalSphere is not null);
             var probe = p.Position + Vector3.Transform(shape.LocalSphere!.Value.Center, p.Rotation);
             Assert.True(p.Overlaps(probe, shape.LocalSphere.Value.Radius), $"object {o.Index} (0x{o.Id:X8})");

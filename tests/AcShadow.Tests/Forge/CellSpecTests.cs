@@ -39,7 +39,7 @@ public sealed class CellSpecTests
         using var cell = DatDatabase.Open(new MemoryStream(dats.Cell!), "client_cell_1.dat");
         Assert.Equal(2u, cell.ReadLandBlockInfo(0x0102FFFE)!.NumCells);
         var first = cell.ReadEnvCell(0x01020100)!;
-        Assert.Equal(new System.Numerics.Vector3(10, 20, 3), first.Position.Origin);
+        Assert.Equal(new System.Numerics.Vector3(10, 20, 3), first.Position.Position);
         // The portal polygon follows the structure's one wall: drawing polygon id 1.
         Assert.Equal(new CellPortal(PortalFlags.PortalSide, 1, CellPortal.Outside, 0), Assert.Single(first.Portals));
         Assert.Equal((ushort)0x0100, Assert.Single(cell.ReadEnvCell(0x01020101)!.Portals).OtherCellId);

@@ -18,7 +18,7 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
     private Setup Setup(uint id) => _portal.ReadSetup(id) ?? throw new Xunit.Sdk.XunitException($"Setup 0x{id:X8} is not in the sample dat");
     private GfxObj Gfx(uint id) => _portal.ReadGfxObj(id) ?? throw new Xunit.Sdk.XunitException($"GfxObj 0x{id:X8} is not in the sample dat");
 
-    private static Vector3 Place(Frame frame, Vector3 local) => Vector3.Transform(local, frame.Orientation) + frame.Origin;
+    private static Vector3 Place(Frame frame, Vector3 local) => Vector3.Transform(local, frame.Rotation) + frame.Position;
 
     [Fact]
     public void Door_0x020019FF_has_the_retail_parts_sphere_and_soda_can_size()
@@ -45,8 +45,8 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
         Assert.NotEqual(resting.Frames[0], @default.Frames[0]);
         foreach (var p in new[] { resting, @default })
         {
-            Assert.Equal(Quaternion.Identity, p.Frames[1].Orientation);
-            Assert.Equal(new Quaternion(0, 0, 1, 0), p.Frames[2].Orientation); // stored w=0, x=0, y=0, z=1
+            Assert.Equal(Quaternion.Identity, p.Frames[1].Rotation);
+            Assert.Equal(new Quaternion(0, 0, 1, 0), p.Frames[2].Rotation); // stored w=0, x=0, y=0, z=1
         }
     }
 
@@ -76,7 +76,7 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
         {
             var world = points.Select(p => Place(frame, p)).ToArray();
             Assert.True(world.Min(p => p.X) <= -0.965f + 1e-4f && world.Max(p => p.X) >= 0.965f - 1e-4f,
-                $"threshold placed at {frame.Origin} covers x {world.Min(p => p.X)}..{world.Max(p => p.X)}, not the 2 m doorway");
+                $"threshold placed at {frame.Position} covers x {world.Min(p => p.X)}..{world.Max(p => p.X)}, not the 2 m doorway");
             Assert.All(world, p => Assert.True(MathF.Abs(p.Y) < 1e-5f));
         }
     }
@@ -129,7 +129,7 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
         Assert.Equal(s.Parts.Count, s.DefaultScale.Count);
         Assert.Contains(s.DefaultScale, v => v.X != v.Z);
         Assert.Contains(s.DefaultScale, v => v.Z == 1.5f);
-        Assert.True(s.FindPlacement(Placement.Resting)!.Frames.Count(f => f.Orientation != Quaternion.Identity) >= 2);
+        Assert.True(s.FindPlacement(Placement.Resting)!.Frames.Count(f => f.Rotation != Quaternion.Identity) >= 2);
     }
 
     [Fact]
@@ -208,13 +208,13 @@ public sealed class SampleContentTests(SampleFixture fixture) : IClassFixture<Sa
         Assert.Contains(info.Objects, o => DatObjectKind.GfxObj.Contains(o.Id) && _portal.ReadGfxObj(o.Id)!.HasPhysics);
         Assert.All(info.Objects, o =>
         {
-            Assert.Equal(0f, o.Frame.Orientation.X);
-            Assert.Equal(0f, o.Frame.Orientation.Y);
-            Assert.NotEqual(0f, o.Frame.Orientation.Z);
+            Assert.Equal(0f, o.Frame.Rotation.X);
+            Assert.Equal(0f, o.Frame.Rotation.Y);
+            Assert.NotEqual(0f, o.Frame.Rotation.Z);
         });
         var building = Assert.Single(info.Buildings);
         Assert.Equal(House, building.ModelId);
-        Assert.NotEqual(Quaternion.Identity, building.Frame.Orientation);
+        Assert.NotEqual(Quaternion.Identity, building.Frame.Rotation);
     }
 
     [Fact]

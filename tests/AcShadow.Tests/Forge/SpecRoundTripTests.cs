@@ -87,7 +87,7 @@ public sealed class SpecRoundTripTests
         var resting = s.FindPlacement(Placement.Resting)!;
         Assert.Equal(new Frame(new Vector3(1, 2, 3), new Quaternion(0, 0, 1, 0)), resting.Frames[0]);
         Assert.Equal(Frame.Identity, resting.Frames[1]);
-        Assert.Equal(new Vector3(0, 0, -0.5f), s.FindPlacement(0x11)!.Frames[1].Origin);
+        Assert.Equal(new Vector3(0, 0, -0.5f), s.FindPlacement(0x11)!.Frames[1].Position);
         Assert.Equal(new CylSphere(new Vector3(0, 0, 0.1f), 0.4f, 1.7f), Assert.Single(s.CylSpheres));
         Assert.Equal(new Sphere(new Vector3(0, 0, 0.5f), 0.6f), Assert.Single(s.Spheres));
         Assert.Equal((1.5f, 2.5f, 0.4f, 0.3f), (s.Radius, s.Height, s.StepUpHeight, s.StepDownHeight));
@@ -110,7 +110,7 @@ public sealed class SpecRoundTripTests
         Assert.Equal(new Frame(new Vector3(1, 2, 3), Quaternion.Identity), info.Objects[1].Frame);
         var building = Assert.Single(info.Buildings);
         Assert.Equal((0x01000010u, 2u), (building.ModelId, building.NumLeaves));
-        Assert.Equal(new Vector3(96, 96, 5), building.Frame.Origin);
+        Assert.Equal(new Vector3(96, 96, 5), building.Frame.Position);
     }
 
     [Fact]

@@ -3,6 +3,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
 using AcShadow.Core.Shapes;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 using static AcShadow.Tests.Support.Records;
 
@@ -47,7 +48,7 @@ public class RetailPoseResolverTests
         var (pose, diagnostics) = Resolve(setup, new Motions(Table(0x09000F00, new AnimData(0x03000F00, low, high, rate)), Steps(0x03000F00, 10)));
         Assert.DoesNotContain(diagnostics, d => d.Code != PoseDiagnosticCodes.PoseMoved);
         Assert.Equal(expected, pose.Provenance.Frame);
-        Assert.Equal(new Vector3(expected, 0, 0), pose.MotionFrames![0].Origin);
+        Assert.Equal(new Vector3(expected, 0, 0), pose.MotionFrames![0].Position);
     }
 
     [Fact]
@@ -87,7 +88,7 @@ public class RetailPoseResolverTests
             var (pose, diagnostics) = Resolve(setup, motions);
             Assert.Null(pose.MotionFrames);
             Assert.Equal(PoseProvenance.PlacementSource, pose.Provenance.Source);
-            Assert.Equal(new Vector3(0, 0, 7), pose.Placement!.Frames[0].Origin);
+            Assert.Equal(new Vector3(0, 0, 7), pose.Placement!.Frames[0].Position);
             Assert.Contains(diagnostics, d => d.Code == code);
         }
     }

@@ -5,6 +5,7 @@ using AcShadow.Analysis.Compile;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Scenes;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Forging;
 using AcShadow.Tests.Chart;
@@ -141,7 +142,7 @@ public class SceneCompileTests
         var checkedProbes = 0;
         foreach (var placed in report.Placed.Select(p => p.Object))
         {
-            var frame = new AcShadow.Fixtures.Collision.PartPose(placed.Frame.Origin, Quaternion.Normalize(placed.Frame.Orientation), 1f);
+            var frame = new AcShadow.Fixtures.Collision.PartPose(placed.Frame.Position, Quaternion.Normalize(placed.Frame.Rotation), 1f);
             foreach (var p in report.For(placed)!.Probes)
             {
                 var at = frame.ToEntity(p.Center);

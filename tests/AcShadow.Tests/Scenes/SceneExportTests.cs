@@ -4,6 +4,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Scenes;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 using AcShadow.Tests.Support;
 using static AcShadow.Tests.Batch.BatchRuns;

@@ -72,8 +72,8 @@ public class SampleSetupShapeTests
         var resting = dat.ReadSetup(0x020019FF)!.FindPlacement(0x65)!;
         for (var i = 0; i < 3; i++)
         {
-            Assert.Equal(resting.Frames[i].Origin, set.Shapes[i].LocalPosition);
-            Assert.Equal(resting.Frames[i].Orientation, set.Shapes[i].LocalRotation);
+            Assert.Equal(resting.Frames[i].Position, set.Shapes[i].LocalPosition);
+            Assert.Equal(resting.Frames[i].Rotation, set.Shapes[i].LocalRotation);
         }
         Assert.Equal(1f, MathF.Abs(set.Shapes[2].LocalRotation.Z), 5);
     }
@@ -87,7 +87,7 @@ public class SampleSetupShapeTests
         Assert.Equal(setup.DefaultScale.Select(s => s.Z * 2f), retail.Shapes.Select(s => s.Scale));
         var gfx = dat.ReadGfxObj(setup.Parts[0])!;
         Assert.Equal(gfx.PhysicsBsp!.BoundingSphere.Radius * setup.DefaultScale[0].Z * 2f, retail.Shapes[0].Radius);
-        Assert.Equal(setup.FindPlacement(0x65)!.Frames[1].Origin * 2f, retail.Shapes[1].LocalPosition);
+        Assert.Equal(setup.FindPlacement(0x65)!.Frames[1].Position * 2f, retail.Shapes[1].LocalPosition);
         var union = ShadowShapeBuilder.Build(setup, dat.ReadGfxObj, new ShapeBuildOptions(ShapePolicy.Union, 2f));
         Assert.All(union.Shapes, s => Assert.Equal(2f, s.Scale));
     }

@@ -3,6 +3,7 @@ using System.Numerics;
 using AcShadow.Analysis.Compile;
 using AcShadow.Analysis.View;
 using AcShadow.Core.Bsp;
+using AcShadow.Fixtures;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
@@ -187,7 +188,7 @@ public sealed class CompiledSceneViewTests
         {
             var kind = o.Kind == SceneObjectKind.Setup ? "Setup" : "GfxObj";
             var node = root.VisualChildren.Single(g => g.Name == o.Model).VisualChildren.Single(n => n.Name == $"{o.Model}: #{o.Index} {kind} {JsonIds.Format(o.Id)}");
-            Assert.Equal(GlbWriter.ToGltf(o.LandblockPosition), node.LocalTransform.Translation);
+            Assert.Equal(GlbWriter.ToGltf(o.LandblockFrame.Position), node.LocalTransform.Translation);
             Assert.Equal(o.Shapes, node.VisualChildren.Count());
         }
         // The column's hull: each face a fan of n − 2 triangles, its bounds its vertices posed in the landblock.
@@ -202,7 +203,7 @@ public sealed class CompiledSceneViewTests
         var pose = new PartPose(Vec(poseJson.GetProperty("position")),
             new Quaternion(q.GetProperty("x").GetSingle(), q.GetProperty("y").GetSingle(), q.GetProperty("z").GetSingle(), q.GetProperty("w").GetSingle()),
             poseJson.GetProperty("scale").GetSingle());
-        var frame = new PartPose(column.LandblockPosition, column.LandblockRotation, 1f);
+        var frame = new PartPose(column.LandblockFrame.Position, column.LandblockFrame.Rotation, 1f);
         var posed = hullJson.GetProperty("vertices").EnumerateArray().Select(v => frame.ToEntity(pose.ToEntity(Vec(v)))).ToArray();
         AssertClose(Gltf(posed.Aggregate(Vector3.Min), posed.Aggregate(Vector3.Max)), LandblockBounds(hull), 1e-3f);
         // Each cell: its retail polygons from its dump, in the cell's frame.
@@ -212,7 +213,7 @@ public sealed class CompiledSceneViewTests
         {
             var dump = BspFileReader.Read(File.ReadAllText(Path.Combine(scene.Path, CompiledSceneWriter.CellBspPath(cell.CellId))));
             Assert.Equal(PolygonTriangles(dump), ViewCommandTests.Triangles(node.VisualChildren.Single()));
-            Assert.Equal(GlbWriter.ToGltf(cell.LandblockPosition), node.LocalTransform.Translation);
+            Assert.Equal(GlbWriter.ToGltf(cell.LandblockFrame.Position), node.LocalTransform.Translation);
         }
     }
 

@@ -3,6 +3,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Text;
 using AcShadow.Analysis.View;
+using AcShadow.Fixtures.Geometry;
 using SharpGLTF.Schema2;
 using SharpGLTF.Validation;
 
@@ -44,8 +45,8 @@ public sealed class GlbWriterTests
         var turned = Quaternion.CreateFromAxisAngle(Up, MathF.PI / 2);
         ViewObject[] objects =
         [
-            new("#1 Setup 0x02000001", new ViewFrame(new Vector3(10, 20, 1.5f), turned), [shape]),
-            new("#2 Setup 0x02000001", ViewFrame.Identity, [shape]),
+            new("#1 Setup 0x02000001", new Frame(new Vector3(10, 20, 1.5f), turned), [shape]),
+            new("#2 Setup 0x02000001", Frame.Identity, [shape]),
         ];
         return new ViewScene("0xA9B4", "title", new Vector3(192, 384, 0), [new ViewGroup("retail", "", "#ffffff", objects)], []);
     }

@@ -170,7 +170,7 @@ public sealed class ViewCommandTests
         foreach (var o in placed)
         {
             var node = retail.VisualChildren.Single(n => n.Name.StartsWith($"retail: #{o.Index} ", StringComparison.Ordinal));
-            AssertClose(GlbWriter.ToGltf(o.WorldPosition), node.WorldMatrix.Translation, 0.01f);
+            AssertClose(GlbWriter.ToGltf(o.WorldFrame.Position), node.WorldMatrix.Translation, 0.01f);
         }
     }
 

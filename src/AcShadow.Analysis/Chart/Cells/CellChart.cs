@@ -14,7 +14,7 @@ namespace AcShadow.Analysis.Chart.Cells;
 /// EnvCell::find_env_collisions), and that query timed. A cell has no cheaper model to compare (every
 /// cheaper model is a solid that would fill the room), so the chart records where its walls block.
 /// </summary>
-public sealed record CellChart(CellCompilation Cell, bool[] Answers, TimingStats Timing)
+internal sealed record CellChart(CellCompilation Cell, bool[] Answers, TimingStats Timing)
 {
     public const string Model = CellCompilation.Model;
 
@@ -24,7 +24,7 @@ public sealed record CellChart(CellCompilation Cell, bool[] Answers, TimingStats
     {
         var compiled = SceneCompiler.CompileCell(cell, structures, options);
         if (compiled.Bsp is null || compiled.Probes.Length == 0) return new CellChart(compiled, [], TimingStats.Of([]));
-        var query = new PreparedModel(new CellOverlapQuery(compiled.Physics!, cell.Position.Origin, cell.Position.Orientation), [], []);
+        var query = new PreparedModel(new CellOverlapQuery(compiled.Physics!, cell.Position.Position, cell.Position.Rotation), [], []);
         var positions = compiled.Probes.Select(p => p with { Center = compiled.Frame.ToEntity(p.Center) }).ToArray();
         return new CellChart(compiled, ChartRunner.Answers(query, positions), timer.Measure("cell: retail", query, positions, options));
     }

@@ -10,7 +10,7 @@ namespace AcShadow.Analysis.Chart.Cells;
 /// cells.csv: one row per indoor cell a landblock chart probed, in cell id order: its structure, its
 /// probes by kind, how many its retail tree blocks and lets through, and the time per query of that tree.
 /// </summary>
-public static class CellsCsv
+internal static class CellsCsv
 {
     public const string FileName = "cells.csv";
 

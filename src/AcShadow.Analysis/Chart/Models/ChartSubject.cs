@@ -12,7 +12,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// how its parts are posed (<see cref="Pose"/>: pose, door state and motion table; <see cref="Motions"/>:
 /// where motion tables and animations are read).
 /// </summary>
-public sealed record ChartSubject(Setup Setup, Func<uint, GfxObj?> GfxObjs, Func<uint, CompiledBsp?> Bsps, float EntityScale = 1f)
+internal sealed record ChartSubject(Setup Setup, Func<uint, GfxObj?> GfxObjs, Func<uint, CompiledBsp?> Bsps, float EntityScale = 1f)
 {
     public ShapeBuildOptions? Pose { get; init; }
     public IMotionSource? Motions { get; init; }

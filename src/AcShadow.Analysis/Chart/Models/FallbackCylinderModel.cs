@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// a cylinder of height 2r based at the sphere's centre (as the seed's builder places it); else the Setup's
 /// Radius × Height standing at the entity origin. On a door that is a 14 cm "soda can".
 /// </summary>
-public sealed class FallbackCylinderModel : IShapeModel
+internal sealed class FallbackCylinderModel : IShapeModel
 {
     public string Name => "fallback-cylinder";
     public string Description => "one cylinder: the first CylSphere, else the first Sphere (h = 2r), else Setup Radius x Height at the origin (the buggy client)";

@@ -5,7 +5,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// query sphere overlap the object?"; preparing may be slow, answering should be fast (it is timed).
 /// Adding a model: one class implementing this, one line in <see cref="ShapeModels.All"/>.
 /// </summary>
-public interface IShapeModel
+internal interface IShapeModel
 {
     /// <summary>Short, stable, lower-case name used in chart's and scene's CSV rows and SVG labels, compiled-scene.json's chosen model and view's layer names (no option selects models by it).</summary>
     string Name { get; }

@@ -8,7 +8,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// box along the principal axes of its physics vertices (<see cref="PartBoxFit"/>), answered by true
 /// distance with retail's ε and touching rules (<see cref="BoxSphereQuery"/>). Exact for a part that is a box.
 /// </summary>
-public sealed class PartBoxesModel : IShapeModel
+internal sealed class PartBoxesModel : IShapeModel
 {
     public string Name => "part-boxes";
     public string Description => "each retail BSP part's oriented box (part axes or principal axes, the tighter), true sphere-box distance";

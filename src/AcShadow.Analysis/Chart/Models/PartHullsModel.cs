@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// answered by true distance with retail's ε and touching rules (<see cref="Fixtures.Collision.ConvexPolytope"/>).
 /// Exact for a convex closed part.
 /// </summary>
-public sealed class PartHullsModel : IShapeModel
+internal sealed class PartHullsModel : IShapeModel
 {
     public string Name => "part-hulls";
     public string Description => "each retail BSP part's convex hull, true sphere-polytope distance";

@@ -8,7 +8,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// Each retail BSP part's bounding sphere only (the root sphere, posed and scaled as retail poses the
 /// part): the broad phase taken for the answer. Objects without BSP parts get nothing.
 /// </summary>
-public sealed class PartSpheresModel : IShapeModel
+internal sealed class PartSpheresModel : IShapeModel
 {
     public string Name => "part-spheres";
     public string Description => "each retail BSP part's bounding sphere, nothing else";

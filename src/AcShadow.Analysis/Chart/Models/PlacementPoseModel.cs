@@ -9,7 +9,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// what posing by the placement frame gets wrong where retail poses the parts by their animation frame
 /// (a door's leaf, closed or open).
 /// </summary>
-public sealed class PlacementPoseModel : IShapeModel
+internal sealed class PlacementPoseModel : IShapeModel
 {
     public string Name => "placement-pose";
     public string Description => "retail rules with every part at its placement frame instead of the animation frame retail poses it by";

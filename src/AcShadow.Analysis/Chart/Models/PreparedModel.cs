@@ -6,7 +6,7 @@ using AcShadow.Fixtures.Shapes;
 namespace AcShadow.Analysis.Chart.Models;
 
 /// <summary>A model made ready for one object: its query, the shapes it tests, and what it had to skip.</summary>
-public sealed record PreparedModel(ISphereOverlap Query, IReadOnlyList<PreparedShape> Shapes, IReadOnlyList<Diagnostic> Diagnostics)
+internal sealed record PreparedModel(ISphereOverlap Query, IReadOnlyList<PreparedShape> Shapes, IReadOnlyList<Diagnostic> Diagnostics)
 {
     public bool Overlaps(Vector3 center, float radius) => Query.Overlaps(center, radius);
 

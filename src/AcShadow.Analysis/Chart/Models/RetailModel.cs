@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// The reference: the retail shape family (ShadowShapeBuilder, Retail policy: parts' BSPs if any part has
 /// one, else CylSpheres, else Spheres) with each BSP part answered by the retail tree query.
 /// </summary>
-public sealed class RetailModel : IShapeModel
+internal sealed class RetailModel : IShapeModel
 {
     public string Name => "retail";
     public string Description => "retail rules: every posed part's PhysicsBSP if any part has one, else CylSpheres, else Spheres (the reference)";

@@ -1,7 +1,7 @@
 namespace AcShadow.Analysis.Chart.Models;
 
 /// <summary>The models the chart compares, in chart order. The first is the reference.</summary>
-public static class ShapeModels
+internal static class ShapeModels
 {
     public static IReadOnlyList<IShapeModel> All { get; } =
     [

@@ -3,7 +3,7 @@ using AcShadow.Fixtures.Geometry;
 namespace AcShadow.Analysis.Chart.Models;
 
 /// <summary>The Setup's own primitives only: every CylSphere as a cylinder and every Sphere as a sphere, no BSP.</summary>
-public sealed class SpheresModel : IShapeModel
+internal sealed class SpheresModel : IShapeModel
 {
     public string Name => "spheres";
     public string Description => "every CylSphere (cylinder) and every Sphere (sphere) of the Setup, no BSP";

@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart.Models;
 /// The seed design's shape set (ShadowShapeBuilder, Union policy: every CylSphere, Spheres as 2r-tall
 /// cylinders when there are no CylSpheres, and every part's BSP), BSP parts answered by the retail tree query.
 /// </summary>
-public sealed class UnionModel : IShapeModel
+internal sealed class UnionModel : IShapeModel
 {
     public string Name => "union";
     public string Description => "the seed design: all CylSpheres, Spheres as cylinders (h = 2r) when no CylSpheres, and all BSP parts";

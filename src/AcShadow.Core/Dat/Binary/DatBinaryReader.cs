@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 using System.Runtime.InteropServices;
 
 namespace AcShadow.Core.Dat.Binary;
@@ -71,6 +72,9 @@ public sealed class DatBinaryReader
     }
 
     public Plane ReadPlane() => new(ReadVector3(), ReadSingle());
+
+    /// <summary>A Frame: origin, then orientation.</summary>
+    public Frame ReadFrame() => new(ReadVector3(), ReadQuaternion());
 
     /// <summary>1, 2 or 4 bytes: 0x80 clear → one byte; 0x80 set, 0x40 clear → two; both set → four.</summary>
     public uint ReadCompressedUInt32()

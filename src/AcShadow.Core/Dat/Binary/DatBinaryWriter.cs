@@ -1,5 +1,6 @@
 using System.Buffers.Binary;
 using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat.Binary;
 
@@ -29,6 +30,8 @@ public sealed class DatBinaryWriter
     public void WriteQuaternion(Quaternion q) { WriteSingle(q.W); WriteSingle(q.X); WriteSingle(q.Y); WriteSingle(q.Z); }
 
     public void WritePlane(Plane p) { WriteVector3(p.Normal); WriteSingle(p.D); }
+
+    public void WriteFrame(Frame f) { WriteVector3(f.Position); WriteQuaternion(f.Rotation); }
 
     public void WriteCompressedUInt32(uint value)
     {

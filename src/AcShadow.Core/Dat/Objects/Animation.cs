@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Binary;
+using AcShadow.Fixtures.Geometry;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
@@ -28,7 +29,7 @@ public sealed record Animation(uint Id, uint Flags, int NumParts, IReadOnlyList<
         if (posFrames)
         {
             pos = new Frame[numFrames];
-            for (var i = 0; i < pos.Length; i++) pos[i] = Frame.Read(r);
+            for (var i = 0; i < pos.Length; i++) pos[i] = r.ReadFrame();
         }
         var frames = new AnimationFrame[numFrames];
         for (var i = 0; i < frames.Length; i++) frames[i] = AnimationFrame.Read(r, (int)numParts, $"frame {i}");
@@ -44,7 +45,7 @@ public sealed record Animation(uint Id, uint Flags, int NumParts, IReadOnlyList<
         w.WriteUInt32(flags);
         w.WriteUInt32((uint)NumParts);
         w.WriteUInt32((uint)PartFrames.Count);
-        foreach (var f in PosFrames ?? []) f.Write(w);
+        foreach (var f in PosFrames ?? []) w.WriteFrame(f);
         foreach (var frame in PartFrames)
         {
             if (frame.Frames.Count != NumParts)

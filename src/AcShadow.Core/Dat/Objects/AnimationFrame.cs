@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Binary;
+using AcShadow.Fixtures.Geometry;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
@@ -10,7 +11,7 @@ public sealed record AnimationFrame(IReadOnlyList<Frame> Frames, IReadOnlyList<A
     public static AnimationFrame Read(DatBinaryReader r, int parts, string where)
     {
         var frames = new Frame[parts];
-        for (var i = 0; i < parts; i++) frames[i] = Frame.Read(r);
+        for (var i = 0; i < parts; i++) frames[i] = r.ReadFrame();
         var hooks = new AnimationHook[r.ReadCount(r.ReadUInt32(), AnimationHookLayout.HeaderBytes, "animation hook")];
         for (var h = 0; h < hooks.Length; h++) hooks[h] = AnimationHook.Read(r, $"{where}, hook {h + 1} of {hooks.Length}");
         return new AnimationFrame(frames, hooks);
@@ -18,7 +19,7 @@ public sealed record AnimationFrame(IReadOnlyList<Frame> Frames, IReadOnlyList<A
 
     public void Write(DatBinaryWriter w)
     {
-        foreach (var f in Frames) f.Write(w);
+        foreach (var f in Frames) w.WriteFrame(f);
         w.WriteUInt32((uint)Hooks.Count);
         foreach (var hook in Hooks) hook.Write(w);
     }

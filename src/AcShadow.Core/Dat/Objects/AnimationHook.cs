@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Numerics;
 using AcShadow.Core.Dat.Binary;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Core.Dat.Objects;
 
@@ -71,14 +72,14 @@ public sealed record AnimationHook
         AnimationHookFieldKind.UInt16 => r.ReadUInt16().ToString(CultureInfo.InvariantCulture),
         AnimationHookFieldKind.PackedGfxObjId => $"0x{r.ReadPackedDataId(AnimationHookField.GfxObjBase):X8}",
         AnimationHookFieldKind.Vector3 => Vector(r.ReadVector3()),
-        AnimationHookFieldKind.Frame => FrameText(Frame.Read(r)),
+        AnimationHookFieldKind.Frame => FrameText(r.ReadFrame()),
         _ => throw new ArgumentOutOfRangeException(nameof(kind), kind, null),
     };
 
     private static string Number(float f) => f.ToString("R", CultureInfo.InvariantCulture);
     private static string Vector(Vector3 v) => $"[{Number(v.X)}, {Number(v.Y)}, {Number(v.Z)}]";
     private static string FrameText(Frame f) =>
-        $"{Vector(f.Origin)}@[{Number(f.Orientation.W)}, {Number(f.Orientation.X)}, {Number(f.Orientation.Y)}, {Number(f.Orientation.Z)}]";
+        $"{Vector(f.Position)}@[{Number(f.Rotation.W)}, {Number(f.Rotation.X)}, {Number(f.Rotation.Y)}, {Number(f.Rotation.Z)}]";
 
     public bool Equals(AnimationHook? other) =>
         other is not null && Type == other.Type && Direction == other.Direction && _payload.AsSpan().SequenceEqual(other._payload);

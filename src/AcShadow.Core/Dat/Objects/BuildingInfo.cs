@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Binary;
+using AcShadow.Fixtures.Geometry;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>A building a LandBlockInfo places: its model (Setup or GfxObj), frame and portals.</summary>
@@ -7,7 +8,7 @@ public sealed record BuildingInfo(uint ModelId, Frame Frame, uint NumLeaves, IRe
     public static BuildingInfo Read(DatBinaryReader r)
     {
         var model = r.ReadUInt32();
-        var frame = Frame.Read(r);
+        var frame = r.ReadFrame();
         var leaves = r.ReadUInt32();
         var count = r.ReadCount(r.ReadUInt32(), 8, "building portal");
         var portals = new BuildingPortal[count];
@@ -18,7 +19,7 @@ public sealed record BuildingInfo(uint ModelId, Frame Frame, uint NumLeaves, IRe
     public void Write(DatBinaryWriter w)
     {
         w.WriteUInt32(ModelId);
-        Frame.Write(w);
+        w.WriteFrame(Frame);
         w.WriteUInt32(NumLeaves);
         w.WriteUInt32((uint)Portals.Count);
         foreach (var p in Portals) p.Write(w);

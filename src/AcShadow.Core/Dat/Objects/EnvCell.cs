@@ -1,4 +1,5 @@
 using AcShadow.Core.Dat.Binary;
+using AcShadow.Fixtures.Geometry;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
@@ -43,7 +44,7 @@ public sealed record EnvCell(
         for (var i = 0; i < surfaces.Length; i++) surfaces[i] = r.ReadUInt16();
         var environment = r.ReadUInt16();
         var structure = r.ReadUInt16();
-        var frame = Frame.Read(r);
+        var frame = r.ReadFrame();
         var portals = new CellPortal[r.ReadCount(portalCount, 8, "cell portal")];
         for (var i = 0; i < portals.Length; i++) portals[i] = CellPortal.Read(r);
         var visible = new ushort[r.ReadCount(visibleCount, 2, "visible cell")];
@@ -73,7 +74,7 @@ public sealed record EnvCell(
         foreach (var s in Surfaces) w.WriteUInt16(s);
         w.WriteUInt16(EnvironmentId);
         w.WriteUInt16(CellStructure);
-        Position.Write(w);
+        w.WriteFrame(Position);
         foreach (var p in Portals) p.Write(w);
         foreach (var v in VisibleCells) w.WriteUInt16(v);
         if (flags.HasFlag(EnvCellFlags.HasStaticObjs))

@@ -1,3 +1,5 @@
+using AcShadow.Fixtures.Geometry;
+
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>

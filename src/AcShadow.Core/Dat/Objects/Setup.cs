@@ -122,7 +122,7 @@ public sealed record Setup(
             if (placement.Frames.Count != Parts.Count)
                 throw new InvalidOperationException($"Setup 0x{Id:X8}: placement {placement.Name} has {placement.Frames.Count} frame(s); the dat stores exactly one per part ({Parts.Count})");
             w.WriteUInt32(placement.Placement);
-            foreach (var f in placement.Frames) f.Write(w);
+            foreach (var f in placement.Frames) w.WriteFrame(f);
             w.WriteUInt32((uint)placement.Hooks.Count);
             foreach (var hook in placement.Hooks) hook.Write(w);
         }

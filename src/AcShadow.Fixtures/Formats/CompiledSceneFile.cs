@@ -1,12 +1,12 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Fixtures.Collision;
-using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 using static AcShadow.Fixtures.Json.JsonFields;
 
-namespace AcShadow.Fixtures.Scenes;
+namespace AcShadow.Fixtures.Formats;
 
 /// <summary>
 /// compiled-scene.json as written, parsed once: the one reader behind <see cref="CompiledScene"/> (the

@@ -3,9 +3,11 @@ using System.Text.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
+using AcShadow.Fixtures.Scenes;
 
-namespace AcShadow.Fixtures.Scenes;
+namespace AcShadow.Fixtures;
 
 /// <summary>
 /// compiled-scene.json (what <c>acshadow scene</c> writes) loaded: every object answered by the model the
@@ -19,9 +21,9 @@ public sealed class CompiledScene
     public uint LandblockId { get; }
     public IReadOnlyList<float> MoverRadii { get; }
     public double TolerancePercent { get; }
-    public IReadOnlyList<CompiledObject> Objects { get; }
-    public IReadOnlyList<CompiledCell> Cells { get; }
-    public SceneQuery Query { get; }
+    internal IReadOnlyList<CompiledObject> Objects { get; }
+    internal IReadOnlyList<CompiledCell> Cells { get; }
+    internal SceneQuery Query { get; }
 
     private CompiledScene(uint landblockId, IReadOnlyList<float> moverRadii, double tolerance, IReadOnlyList<CompiledObject> objects, IReadOnlyList<CompiledCell> cells, SceneQuery query)
     {
@@ -71,7 +73,7 @@ public sealed class CompiledScene
         foreach (var o in file.Objects)
         {
             var shapes = o.Shapes.Select(s => Shape(s, trees, bspFile)).ToArray();
-            objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, o.Position, o.Rotation) { CellId = o.CellId });
+            objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, new Frame(o.Position, o.Rotation)) { CellId = o.CellId });
             if (o.Bound is not { } bound) continue;
             queries.Add(new PlacedQuery(o.Index, o.Id, o.Position, o.Rotation, new AnyOverlap(shapes), bound.Center, bound.Radius));
         }
@@ -80,7 +82,7 @@ public sealed class CompiledScene
         foreach (var c in file.Cells)
         {
             if (c.File is null) continue;
-            cells.Add(new CompiledCell(c.CellId, c.Model!, c.Position, c.Rotation));
+            cells.Add(new CompiledCell(c.CellId, c.Model!, new Frame(c.Position, c.Rotation)));
             try
             {
                 cellQueries.Add(new SceneCell(c.CellId, new CellOverlapQuery(bspFile(c.File), c.Position, c.Rotation)));
