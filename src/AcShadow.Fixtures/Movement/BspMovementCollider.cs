@@ -49,12 +49,7 @@ internal sealed class BspMovementCollider(BspPart part)
 
         if (path.Collide)
         {
-            var center = sphere0.Center;
-            var walkable = _tree.FindWalkable(path, ref center, sphere0.Radius, movement, path.LocalSpaceZ);
-            if (walkable is null) return TransitionState.OK;
-            path.AddOffsetToCheckPos(ToGlobalOffset(center - sphere0.Center));
-            StandOn(transition, walkable, center, sphere0.Radius);
-            return TransitionState.Adjusted;
+            return RestOnWalkable(transition, sphere0, movement);
         }
 
         CompiledPolygon? touched0 = null;
@@ -97,6 +92,16 @@ internal sealed class BspMovementCollider(BspPart part)
         var path = transition.Path;
         var amount = -(path.StepDownAmt * path.WalkInterp);
         var movement = MoveMath.Scale(MoveMath.Scale(path.LocalSpaceZ, amount), 1f / Scale);
+        return RestOnWalkable(transition, sphere0, movement);
+    }
+
+    /// <summary>
+    /// find_walkable along <paramref name="movement"/>; if a walkable polygon lifted the sphere, the check position
+    /// moves with it (× scale), the contact plane becomes that polygon's and the path remembers it (Adjusted).
+    /// </summary>
+    private TransitionState RestOnWalkable(Transition transition, Sphere sphere0, Vector3 movement)
+    {
+        var path = transition.Path;
         var center = sphere0.Center;
         var walkable = _tree.FindWalkable(path, ref center, sphere0.Radius, movement, path.LocalSpaceZ);
         if (walkable is null) return TransitionState.OK;

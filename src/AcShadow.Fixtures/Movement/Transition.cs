@@ -198,15 +198,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
     /// </summary>
     private bool KeepOnGround(ref TransitionState state)
     {
-        var z = MovementConstants.LandingZ;
-        var height = MovementConstants.OffWalkableStep;
-        if (Info.OnWalkable)
-        {
-            z = MovementConstants.FloorZ;
-            height = Info.StepDownHeight;
-        }
-        Path.WalkableAllowance = z;
-        Path.SaveCheckPos();
+        var (height, z) = PrepareStep(Info.StepDownHeight);
         var diameter = Path.Radius(0) * 2f;
         if (Path.NumSphere < 2 && diameter < height) height = Path.Radius(0) * 0.5f;
         if (diameter >= height)
@@ -264,6 +256,18 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
         return TransitionState.Collided;
     }
 
+    /// <summary>
+    /// How far a step up or down may go and what it may stand on: the mover's own height and floor_z on walkable
+    /// ground, else 0.04 m and z_for_landing. Sets walkable_allowance and saves the check position.
+    /// </summary>
+    private (float Height, float Z) PrepareStep(float walkableHeight)
+    {
+        var (height, z) = Info.OnWalkable ? (walkableHeight, MovementConstants.FloorZ) : (MovementConstants.OffWalkableStep, MovementConstants.LandingZ);
+        Path.WalkableAllowance = z;
+        Path.SaveCheckPos();
+        return (height, z);
+    }
+
     // CTransition::step_down
     public bool StepDown(float height, float z)
     {
@@ -289,15 +293,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
         Collisions.ClearContactPlane();
         Path.StepUp = true;
         Path.StepUpNormal = normal;
-        var height = MovementConstants.OffWalkableStep;
-        var z = MovementConstants.LandingZ;
-        if (Info.OnWalkable)
-        {
-            z = MovementConstants.FloorZ;
-            height = Info.StepUpHeight;
-        }
-        Path.WalkableAllowance = z;
-        Path.SaveCheckPos();
+        var (height, z) = PrepareStep(Info.StepUpHeight);
         var stepped = StepDown(height, z);
         Path.StepUp = false;
         Path.Walkable = null;
