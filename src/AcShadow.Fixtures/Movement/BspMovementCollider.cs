@@ -55,13 +55,15 @@ internal sealed class BspMovementCollider(BspPart part)
         CompiledPolygon? touched0 = null;
         if (transition.Info.Contact)
         {
-            if (_tree.SphereIntersectsPoly(sphere0.Center, sphere0.Radius, movement, ref touched0))
-                return StepSphereUp(transition, touched0!.Normal);
+            var hit0 = _tree.SphereIntersectsPoly(sphere0.Center, sphere0.Radius, movement, ref touched0);
+            TouchMargin(transition, touched0, sphere0);
+            if (hit0) return StepSphereUp(transition, touched0!.Normal);
             if (twoSpheres)
             {
                 CompiledPolygon? touched1 = null;
-                if (_tree.SphereIntersectsPoly(sphere1.Center, sphere1.Radius, movement, ref touched1))
-                    return SphereSlide.Slide(transition, ToGlobal(touched1!.Normal));
+                var hit1 = _tree.SphereIntersectsPoly(sphere1.Center, sphere1.Radius, movement, ref touched1);
+                TouchMargin(transition, touched1, sphere1);
+                if (hit1) return SphereSlide.Slide(transition, ToGlobal(touched1!.Normal));
                 if (touched1 is not null) return NegPolyHit(path, touched1, false);
                 if (touched0 is not null) return NegPolyHit(path, touched0, true);
             }
@@ -84,6 +86,13 @@ internal sealed class BspMovementCollider(BspPart part)
             }
         }
         return TransitionState.OK;
+    }
+
+    /// <summary>How far the touched polygon's plane is from the reach it was touched within (|dist| against r − ε).</summary>
+    private static void TouchMargin(Transition transition, CompiledPolygon? touched, Sphere sphere)
+    {
+        if (touched is null) return;
+        transition.Trace.Margin(MathF.Abs(touched.Distance(sphere.Center)) - (sphere.Radius - MovementConstants.Epsilon));
     }
 
     // BSPTREE::step_sphere_down

@@ -71,7 +71,11 @@ public static class MovementReference
             }
             return new MovementFrame(frame, valid, steps, _position, _contact, _onWalkable,
                 _contact ? _contactPlane : null, _sliding,
-                collisions.CollisionNormalValid ? collisions.CollisionNormal : null, collisions.HitObject);
+                collisions.CollisionNormalValid ? collisions.CollisionNormal : null, collisions.HitObject)
+            {
+                Events = [.. transition.Trace.Events],
+                MinMargin = transition.Trace.MinMargin,
+            };
         }
 
         // CPhysicsObj::transition's set-up: get_object_info, init_sphere, the contact plane and sliding normal

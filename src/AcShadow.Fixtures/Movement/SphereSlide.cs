@@ -27,20 +27,32 @@ internal static class SphereSlide
         var plane = collisions.ContactPlaneValid ? collisions.ContactPlane : collisions.LastKnownContactPlane;
         var direction = Vec.Cross(normal, plane.Normal);
         var directionSquared = MoveMath.LengthSquared(direction);
+        var trace = transition.Trace;
+        trace.Margin(directionSquared - MovementConstants.Epsilon);
         if (directionSquared >= MovementConstants.Epsilon)
         {
             var along = MoveMath.Dot(direction, g);
             var offset = MoveMath.Scale(direction, along * (1f / directionSquared));
-            if (MoveMath.LengthSquared(offset) < MovementConstants.Epsilon) return TransitionState.Collided;
+            var offsetSquared = MoveMath.LengthSquared(offset);
+            // A head-on hit has no tangential part at all: that is no threshold decision, so no margin.
+            if (offsetSquared > 0f) trace.Margin(offsetSquared - MovementConstants.Epsilon);
+            if (offsetSquared < MovementConstants.Epsilon)
+            {
+                trace.Event("slideStopped");
+                return TransitionState.Collided;
+            }
             path.AddOffsetToCheckPos(offset - g);
+            trace.Event("slide");
             return TransitionState.Slid;
         }
         if (MoveMath.Dot(normal, plane.Normal) >= 0f)
         {
             path.AddOffsetToCheckPos(MoveMath.Scale(normal, -MoveMath.Dot(normal, g)));
+            trace.Event("slide");
             return TransitionState.Slid;
         }
         // Retail returns Collided here; ACE returns OK (movement.md §5.3 #2).
+        trace.Event("slideStopped");
         return TransitionState.Collided;
     }
 }

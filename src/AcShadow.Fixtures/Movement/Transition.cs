@@ -12,6 +12,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
     public SpherePath Path { get; } = new();
     public CollisionInfo Collisions { get; } = new();
     public ObjectInfo Info { get; } = new();
+    public MovementTrace Trace { get; } = new();
 
     // CTransition::init_contact_plane
     public void InitContactPlane(Plane plane, bool isWater)
@@ -53,8 +54,12 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
     // CTransition::find_transitional_position (heading fixed, so no per-step rotation)
     public bool FindTransitionalPosition(out int steps)
     {
-        var (numSteps, perStep) = CalcNumSteps(Path.EndPos - Path.BeginPos, Path.Radius(0));
+        var offset0 = Path.EndPos - Path.BeginPos;
+        var (numSteps, perStep) = CalcNumSteps(offset0, Path.Radius(0));
         steps = numSteps;
+        // ceil(|offset| / r) flips at whole numbers of radii (and at one radius for a single step)
+        var ratio = MathF.Sqrt(MoveMath.LengthSquared(offset0)) / Path.Radius(0);
+        Trace.Margin((ratio - MathF.Max(1f, MathF.Round(ratio))) * Path.Radius(0));
         Path.SetCheckPos(Path.CurPos);
         if (numSteps == 0) return true;
         var state = TransitionState.OK;
@@ -206,6 +211,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
             if (StepDown(height, z))
             {
                 Path.Walkable = null;
+                Trace.Event("stepDown");
                 state = TransitionState.OK;
                 return true;
             }
@@ -216,6 +222,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
             if (StepDown(height, z) || StepDown(height, z))
             {
                 Path.Walkable = null;
+                Trace.Event("stepDown");
                 state = TransitionState.OK;
                 return true;
             }
@@ -241,6 +248,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
             reset = state != TransitionState.OK;
         }
         Path.Walkable = null;
+        Trace.Event(reset ? "landFailed" : "land");
         if (!reset) return state;
         Path.RestoreCheckPos();
         Collisions.ClearContactPlane();
@@ -297,6 +305,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
         var stepped = StepDown(height, z);
         Path.StepUp = false;
         Path.Walkable = null;
+        Trace.Event(stepped ? "stepUp" : "stepUpFailed");
         if (!stepped) Path.RestoreCheckPos();
         return stepped;
     }
@@ -333,6 +342,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
     {
         if (!Info.OnWalkable || !Info.EdgeSlide)
         {
+            Trace.Event("walkOff");
             Path.Walkable = null;
             RestoreAndClear();
             state = TransitionState.OK;
@@ -341,6 +351,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
         if (Collisions.ContactPlaneValid && Collisions.ContactPlane.Normal.Z < z)
         {
             var contact = Collisions.ContactPlane;
+            Trace.Event("cliffSlide");
             Path.Walkable = null;
             RestoreAndClear();
             state = CliffSlide(contact);
@@ -348,6 +359,7 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
         }
         if (Path.Walkable is not null)
         {
+            Trace.Event("precipiceSlide");
             RestoreAndClear();
             state = Path.PrecipiceSlide(this);
             return state == TransitionState.Collided;
@@ -369,9 +381,11 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
             var (center, radius) = walkable.Pose.ToLocal(Path.GlobalCenter[0], Path.Radius(0));
             walkable.Center = center;
             walkable.Radius = radius;
+            Trace.Event("precipiceSlide");
             state = Path.PrecipiceSlide(this);
             return state == TransitionState.Collided;
         }
+        Trace.Event("edgeStop");
         state = TransitionState.Collided;
         return true;
     }
