@@ -1,0 +1,131 @@
+using System.Numerics;
+using AcShadow.Cli.Infrastructure;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Formats;
+using AcShadow.Fixtures.Movement;
+using AcShadow.Forging;
+using AcShadow.Tests.Support;
+
+namespace AcShadow.Tests.Movement;
+
+/// <summary>
+/// `acshadow move` on the sample: the door's cases as a collision author gets them (the written file read back
+/// through the consumer reader, its BSPs from the gfxobjs/ beside it), their outcomes, and the same bytes
+/// whatever the thread count.
+/// </summary>
+public sealed class MoveCommandTests : IClassFixture<MoveCommandTests.DoorSuite>
+{
+    /// <summary>The sample door's suite written once by `move --setup 0x020019FF --jobs 2`.</summary>
+    public sealed class DoorSuite : IDisposable
+    {
+        public TempDir Dir { get; } = new();
+        public CliRun Run { get; }
+
+        public DoorSuite() => Run = CliRun.Of("move", "--setup", "0x020019FF", "--jobs", "2", "--out", Dir.Path);
+
+        public string FilePath => Path.Combine(Dir.Path, "movement", "0x020019FF.movement.json");
+
+        public MovementSuite Read() => MovementFileReader.Read(File.ReadAllText(FilePath),
+            id => CompiledBsp.Compile(BspFileReader.Read(File.ReadAllText(Path.Combine(Dir.Path, FileFormats.Bsp.PathFor(id))))));
+
+        public void Dispose() => Dir.Dispose();
+    }
+
+    private readonly DoorSuite _door;
+
+    public MoveCommandTests(DoorSuite door) => _door = door;
+
+    /// <summary>Head-on and 0.45 m off-centre (either side, from either side of the door, walking): what the door bug is about.</summary>
+    private static bool IsHeadOnWalk(MovementCase c) =>
+        c.Id.EndsWith("/hdg+00/walk", StringComparison.Ordinal) && (c.Id.Contains("/lat+0.000/") || c.Id.Contains("/lat+0.450/") || c.Id.Contains("/lat-0.450/"));
+
+    [Fact]
+    public void The_closed_door_blocks_every_head_on_and_off_centre_walk_without_crossing_the_leaf_face()
+    {
+        Assert.Equal(ExitCodes.Ok, _door.Run.ExitCode);
+        var suite = _door.Read();
+        var closed = suite.Cases.Where(c => c.State == "closed" && IsHeadOnWalk(c)).ToArray();
+        Assert.Equal(6, closed.Length);
+        var r0 = suite.Mover.Spheres[0].Radius;
+        foreach (var c in closed)
+        {
+            Assert.Equal(MovementOutcome.Blocked, c.Outcome.Class);
+            Assert.False(c.Outcome.CrossedGate);
+            Assert.False(c.Fragile);
+            // The leaf's faces are 0.13 m either side of the gate (its mid-plane): sphere 0 never passes the near one.
+            Assert.All(c.Expected, f => Assert.True(Side(c.Gate, f.Position) + r0 <= -0.13f + 1e-3f, $"{c.Id} frame {f.Frame}"));
+            Assert.Contains(c.Expected, f => f.HitObject);
+        }
+    }
+
+    [Fact]
+    public void The_open_door_lets_the_same_walks_through()
+    {
+        var open = _door.Read().Cases.Where(c => c.State == "open" && IsHeadOnWalk(c)).ToArray();
+        Assert.Equal(6, open.Length);
+        Assert.All(open, c =>
+        {
+            Assert.Equal(MovementOutcome.Reached, c.Outcome.Class);
+            Assert.True(c.Outcome.CrossedGate);
+        });
+    }
+
+    [Fact]
+    public void A_collision_author_running_the_cases_from_the_file_gets_the_expected_frames_back()
+    {
+        // The reference stands in for the author's engine: loaded from the file alone, every case reruns to the
+        // frames written (short frames carry the state before them) and to the written outcome.
+        var suite = _door.Read();
+        Assert.Equal(2 * 11 * 7 * 2 * 2, suite.Cases.Count);
+        Assert.Equal(SampleSpecAuthor.MoverSetup, suite.MoverSetupId);
+        foreach (var c in suite.Cases)
+        {
+            var frames = MovementReference.Run(suite.Mover, suite.Objects[c.State], c.Walk);
+            Assert.Equal(c.Expected.Count, frames.Count);
+            for (var i = 0; i < frames.Count; i++)
+            {
+                Assert.Equal(c.Expected[i].Position, frames[i].Position);
+                Assert.Equal(c.Expected[i].Valid, frames[i].Valid);
+                Assert.Equal(c.Expected[i].Contact, frames[i].Contact);
+            }
+            Assert.Equal(c.Outcome.Class, MovementOutcome.Of(c.Walk, frames, c.Gate).Class);
+        }
+    }
+
+    [Fact]
+    public void The_file_is_the_same_bytes_with_one_worker_and_written_short_where_frames_change_nothing()
+    {
+        using var one = new TempDir();
+        Assert.Equal(ExitCodes.Ok, CliRun.Of("move", "--setup", "0x020019FF", "--jobs", "1", "--out", one.Path).ExitCode);
+        var bytes = File.ReadAllBytes(_door.FilePath);
+        Assert.Equal(bytes, File.ReadAllBytes(Path.Combine(one.Path, "movement", "0x020019FF.movement.json")));
+        var text = System.Text.Encoding.UTF8.GetString(bytes);
+        // An open-door walk only moves: every frame but its first and last is {"f", "valid", "end"}.
+        Assert.Contains("{\"f\": 1, \"valid\": true, \"end\": [", text);
+    }
+
+    [Theory]
+    [InlineData(ExitCodes.Usage, "--state", "ajar")]
+    [InlineData(ExitCodes.NotInDat, "--mover", "0x0200FFF0")]
+    public void Bad_input_is_one_line_and_writes_nothing(int code, string option, string value)
+    {
+        using var dir = new TempDir();
+        var run = CliRun.Of("move", "--setup", "0x020019FF", option, value, "--out", dir.Path);
+        Assert.Equal(code, run.ExitCode);
+        Assert.Single(run.ErrorLines, l => l.StartsWith("acshadow: ", StringComparison.Ordinal) && l.Contains(option));
+        Assert.Empty(dir.Files());
+    }
+
+    [Fact]
+    public void A_real_dat_has_no_default_mover()
+    {
+        using var dat = SampleDat.WriteToTempFolder();
+        using var dir = new TempDir();
+        var run = CliRun.Of("move", "--setup", "0x020019FF", "--dat", dat.Path, "--out", dir.Path);
+        Assert.Equal(ExitCodes.Usage, run.ExitCode);
+        Assert.Contains("--mover", run.Error);
+        Assert.Equal(ExitCodes.Ok, CliRun.Of("move", "--setup", "0x020019FF", "--dat", dat.Path, "--mover", "0x02001100", "--state", "closed", "--out", dir.Path).ExitCode);
+    }
+
+    private static float Side(Plane gate, Vector3 p) => gate.Normal.X * p.X + gate.Normal.Y * p.Y + gate.Normal.Z * p.Z + gate.D;
+}
