@@ -4,6 +4,7 @@ using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Catalog;
+using AcShadow.Core.Export;
 using AcShadow.Core.Movement;
 using AcShadow.Core.Poses;
 using AcShadow.Forging;
@@ -24,7 +25,7 @@ public static class MoveCommand
         var setup = new Option<string?>("--setup") { Description = "the object's Setup id, e.g. 0x020019FF", HelpName = "ID" };
         var doors = new Option<bool>("--doors") { Description = "every Setup of the built-in door catalog the dat has" };
         var setups = new Option<string?>("--setups") { Description = "a file of Setup ids, one a line, '#' comments", HelpName = "FILE" };
-        var mover = new Option<string?>("--mover") { Description = "the mover's Setup id (default on the sample: its forged person 0x02001100; required on a real dat)", HelpName = "ID" };
+        var mover = MoverOption();
         var state = new Option<string?>("--state") { Description = "a door's state: closed or open (default: both)", HelpName = "closed|open" };
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DumpCommand.DefaultOut);
@@ -37,6 +38,36 @@ public static class MoveCommand
             States(parse.GetValue(state)), parse.GetValue(dat), parse.GetValue(outDir)!, SelectionOptions.ParseJobs(parse.GetValue(jobs))));
         return command;
     }
+
+    public static Option<string?> MoverOption() => new("--mover") { Description = "the mover's Setup id (default on the sample: its forged person 0x02001100; required on a real dat)", HelpName = "ID" };
+
+    /// <summary>batch's `--movement IDS`: the object Setups whose movement cases a batch adds.</summary>
+    public static Option<string?> MovementOption() => new("--movement")
+    {
+        Description = "also write these objects' movement cases (comma-separated Setup ids, e.g. 0x020019FF) into movement/, listed in index.json",
+        HelpName = "IDS",
+    };
+
+    /// <summary>What `--movement IDS [--mover ID]` selects (null without --movement); the mover must be in the dat.</summary>
+    public static MovementSelection? Selection(string? ids, string? moverText, OpenedDat dat)
+    {
+        if (ids is null)
+        {
+            if (moverText is not null) throw new CliException(ExitCodes.Usage, "--mover applies to --movement: add --movement IDS");
+            return null;
+        }
+        var setups = ids.Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries)
+            .Select(t => ArgumentParsing.SetupId(t, "--movement")).Distinct().Order().ToArray();
+        if (setups.Length == 0) throw new CliException(ExitCodes.Usage, "--movement: give one or more Setup ids, comma-separated, e.g. 0x020019FF");
+        var mover = MoverId(moverText, dat);
+        if (MoverSetup.Read(dat.Portal, mover) is null)
+            throw new CliException(ExitCodes.NotInDat, $"--mover: Setup {JsonIds.Format(mover)} is not in {dat.Description}: check the id");
+        return new MovementSelection(setups, mover);
+    }
+
+    private static uint MoverId(string? text, OpenedDat dat) => text is not null ? ArgumentParsing.SetupId(text, "--mover")
+        : dat.IsSample ? SampleSpecAuthor.MoverSetup
+        : throw new CliException(ExitCodes.Usage, "pass --mover ID, the Setup of the character that walks (a real dat has no default mover: docs/movement.md)");
 
     private static IReadOnlyList<DoorState>? States(string? text) => text switch
     {
@@ -53,12 +84,11 @@ public static class MoveCommand
         if ((setupText is null ? 0 : 1) + (doors ? 1 : 0) + (setupsFile is null ? 0 : 1) != 1)
             throw new CliException(ExitCodes.Usage, "move: give exactly one of --setup ID, --doors and --setups FILE");
         var single = setupText is null ? (uint?)null : ArgumentParsing.SetupId(setupText);
-        var moverId = moverText is null ? (uint?)null : ArgumentParsing.SetupId(moverText, "--mover");
+        if (moverText is not null) ArgumentParsing.SetupId(moverText, "--mover");
         var list = setupsFile is null ? null : SelectionOptions.ReadSetupList(setupsFile);
         OutputPaths.RequireNamed(outDir);
         using var dat = DatLocator.Open(datPath, null, console);
-        var moverSetup = moverId ?? (dat.IsSample ? SampleSpecAuthor.MoverSetup
-            : throw new CliException(ExitCodes.Usage, "move: pass --mover ID, the Setup of the character that walks (a real dat has no default mover: docs/movement.md)"));
+        var moverSetup = MoverId(moverText, dat);
         var walker = MoverSetup.Read(dat.Portal, moverSetup)
             ?? throw new CliException(ExitCodes.NotInDat, $"--mover: Setup {JsonIds.Format(moverSetup)} is not in {dat.Description}: check the id");
         IReadOnlyList<uint> ids;

@@ -10,8 +10,8 @@ namespace AcShadow.Core.Formats;
 /// <summary>
 /// Writes one object Setup's movement suite as the canonical acshadow.movement-case/1 file (docs/formats.md):
 /// the object in each state (its pose and shapes, whose BSPs are the gfxobjs/ dumps beside it), the floor, the
-/// mover, and every case with its reference frames. A frame that changes nothing is written short (movement.md
-/// §3.4): only <c>f</c>, <c>valid</c> and <c>end</c>; it carries the previous frame's state.
+/// mover, and every case with its reference frames. A frame that changes nothing but where the mover is (movement.md
+/// §3.4) is written short, only <c>f</c>, <c>valid</c> and <c>end</c>: the rest of its state is the frame before's.
 /// </summary>
 public static class MovementFileWriter
 {
@@ -99,11 +99,14 @@ public static class MovementFileWriter
         return arr;
     }
 
-    /// <summary>A frame that only moved: valid, no collision, no hit, no response, the same steps and contact state as the one before.</summary>
+    /// <summary>
+    /// A frame whose state is the frame before's in everything but its position and validity: the same steps,
+    /// contact state, sliding and collision normals, hit and events (a free walk, or a walker held against a face).
+    /// </summary>
     private static bool ChangesNothing(MovementFrame f, MovementFrame previous) =>
-        f.Valid && f.CollisionNormal is null && !f.HitObject && f.Events.Count == 0 && f.SlidingNormal is null
-        && f.Steps == previous.Steps && f.Contact == previous.Contact && f.OnWalkable == previous.OnWalkable
-        && f.ContactPlane == previous.ContactPlane;
+        f.Steps == previous.Steps && f.Contact == previous.Contact && f.OnWalkable == previous.OnWalkable
+        && f.ContactPlane == previous.ContactPlane && f.SlidingNormal == previous.SlidingNormal
+        && f.CollisionNormal == previous.CollisionNormal && f.HitObject == previous.HitObject && f.Events.SequenceEqual(previous.Events);
 
     private static JsonObj FullFrame(MovementFrame f, string objectId) => new JsonObj()
         .Add("f", f.Frame)

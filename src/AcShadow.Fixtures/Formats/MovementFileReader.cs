@@ -10,7 +10,7 @@ namespace AcShadow.Fixtures.Formats;
 /// <summary>
 /// Reads an acshadow.movement-case/1 file back into a <see cref="MovementSuite"/>: the object per state with the
 /// BSPs its shapes name (from <c>bsp</c>, given a GfxObj id: the dumps in gfxobjs/ beside movement/), the mover
-/// and the cases with their expected frames. A short frame takes the state of the frame before it.
+/// and the cases with their expected frames. A short frame is the frame before it at a new position (and validity).
 /// </summary>
 public static class MovementFileReader
 {
@@ -80,7 +80,6 @@ public static class MovementFileReader
     private static MovementFrame ShortFrame(JsonElement f, MovementFrame? previous)
     {
         if (previous is null) throw new FormatException("the first frame of a case must be written in full");
-        return new MovementFrame(Int(f, "f"), Prop(f, "valid").GetBoolean(), previous.Steps, Vec(Prop(f, "end")), previous.Contact,
-            previous.OnWalkable, previous.ContactPlane, null, null, false);
+        return previous with { Frame = Int(f, "f"), Valid = Prop(f, "valid").GetBoolean(), Position = Vec(Prop(f, "end")) };
     }
 }

@@ -58,7 +58,7 @@ public class BatchCommandTests
             Assert.Equal(JsonValueKind.Null, inputs.GetProperty("cellDat").ValueKind);
             Assert.Equal("retail", inputs.GetProperty("policy").GetString());
             Assert.True(inputs.GetProperty("selection").GetProperty("all").GetBoolean());
-            Assert.Contains("14 setup(s)", run.Out);
+            Assert.Contains("15 setup(s)", run.Out);
             Assert.Contains("wall time", run.Out);
         }
     }

@@ -127,5 +127,36 @@ public sealed class MoveCommandTests : IClassFixture<MoveCommandTests.DoorSuite>
         Assert.Equal(ExitCodes.Ok, CliRun.Of("move", "--setup", "0x020019FF", "--dat", dat.Path, "--mover", "0x02001100", "--state", "closed", "--out", dir.Path).ExitCode);
     }
 
+    [Fact]
+    public void Batch_adds_the_cases_to_index_json_and_verify_names_a_changed_case_by_its_id()
+    {
+        using var dir = new TempDir();
+        Assert.Equal(ExitCodes.Ok, CliRun.Of("batch", "--doors", "--movement", "0x020019FF", "--out", dir.Path, "--quiet").ExitCode);
+        var index = File.ReadAllText(Path.Combine(dir.Path, "index.json"));
+        Assert.Contains("\"path\": \"movement/0x020019FF.movement.json\"", index);
+        Assert.Contains("\"movement\": {\"setups\": [\"0x020019FF\"], \"mover\": \"0x02001100\"}", index);
+        // The batch's movement file is the one move writes.
+        Assert.Equal(File.ReadAllBytes(_door.FilePath), File.ReadAllBytes(Path.Combine(dir.Path, "movement", "0x020019FF.movement.json")));
+        Assert.Equal(ExitCodes.Ok, CliRun.Of("verify", "--fixtures", dir.Path).ExitCode);
+
+        var path = Path.Combine(dir.Path, "movement", "0x020019FF.movement.json");
+        var text = File.ReadAllText(path);
+        var at = text.IndexOf("\"class\": \"blocked\"", StringComparison.Ordinal);
+        File.WriteAllText(path, text[..at] + "\"class\": \"slid\"" + text[(at + "\"class\": \"blocked\"".Length)..]);
+        var run = CliRun.Of("verify", "--fixtures", dir.Path);
+        Assert.Equal(ExitCodes.Drift, run.ExitCode);
+        Assert.Contains("$.cases[id=closed/out-in/lat+0.000/hdg+00/walk].expected.outcome.class: \"slid\" → \"blocked\"", run.Out);
+    }
+
+    [Fact]
+    public void Batch_movement_needs_ids_and_a_mover_in_the_dat()
+    {
+        using var dir = new TempDir();
+        Assert.Equal(ExitCodes.Usage, CliRun.Of("batch", "--doors", "--movement", "door", "--out", dir.Path).ExitCode);
+        Assert.Equal(ExitCodes.Usage, CliRun.Of("batch", "--doors", "--mover", "0x02001100", "--out", dir.Path).ExitCode);
+        Assert.Equal(ExitCodes.NotInDat, CliRun.Of("batch", "--doors", "--movement", "0x020019FF", "--mover", "0x0200FFF0", "--out", dir.Path).ExitCode);
+        Assert.Empty(dir.Files());
+    }
+
     private static float Side(Plane gate, Vector3 p) => gate.Normal.X * p.X + gate.Normal.Y * p.Y + gate.Normal.Z * p.Z + gate.D;
 }

@@ -1,9 +1,9 @@
-using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
+using AcShadow.Core.Movement;
 using AcShadow.Fixtures.Batch;
 using AcShadow.Fixtures.Formats;
 
-namespace AcShadow.Core.Movement;
+namespace AcShadow.Core.Export;
 
 /// <summary>
 /// The files of one generated suite: its movement file and the BSP dumps its shapes name (gfxobjs/, the same
