@@ -58,7 +58,7 @@ public static class BatchCommand
             parse.GetValue(quiet),
             parse.GetValue(incremental),
             parse.GetValue(format) ?? OutputFormats.Canonical,
-            parse.GetValue(movement), parse.GetValue(mover)));
+            parse.GetValue(movement) ?? [], parse.GetValue(mover)));
         return command;
     }
 
@@ -70,7 +70,7 @@ public static class BatchCommand
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
-        ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats, string? movementIds, string? moverId)
+        ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats, uint[] movementIds, uint? moverId)
     {
         var clock = Stopwatch.StartNew();
         OutputFolder.Check(outDir);

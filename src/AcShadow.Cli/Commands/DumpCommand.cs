@@ -117,7 +117,7 @@ public static class DumpCommand
         return ExitCodes.Ok;
     }
 
-    internal static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
+    private static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
     {
         using var folder = OutputFolder.Open(outDir);
         var contents = files.Select(f => (f.RelativePath, f.Content)).ToArray();

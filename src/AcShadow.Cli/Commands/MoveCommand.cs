@@ -22,11 +22,12 @@ public static class MoveCommand
 {
     public static Command Create(CliConsole console)
     {
-        var setup = new Option<string?>("--setup") { Description = "the object's Setup id, e.g. 0x020019FF", HelpName = "ID" };
+        var setup = ValueOptions.Single("--setup", "ID", "the object's Setup id, e.g. 0x020019FF", text => ArgumentParsing.SetupId(text));
         var doors = new Option<bool>("--doors") { Description = "every Setup of the built-in door catalog the dat has" };
         var setups = new Option<string?>("--setups") { Description = "a file of Setup ids, one a line, '#' comments", HelpName = "FILE" };
         var mover = MoverOption();
-        var state = new Option<string?>("--state") { Description = "a door's state: closed or open (default: both)", HelpName = "closed|open" };
+        var state = new PoseOptions().State;
+        state.Description = "a door's state: closed or open (default: both)";
         var dat = CommonOptions.Dat();
         var outDir = CommonOptions.Out(DumpCommand.DefaultOut);
         var jobs = SelectionOptions.Jobs();
@@ -35,62 +36,47 @@ public static class MoveCommand
             setup, doors, setups, mover, state, dat, outDir, jobs,
         };
         command.SetAction(parse => Run(console, parse.GetValue(setup), parse.GetValue(doors), parse.GetValue(setups), parse.GetValue(mover),
-            States(parse.GetValue(state)), parse.GetValue(dat), parse.GetValue(outDir)!, SelectionOptions.ParseJobs(parse.GetValue(jobs))));
+            parse.GetValue(state) is { } one ? [one] : null, parse.GetValue(dat), parse.GetValue(outDir)!, SelectionOptions.WorkersOrAllCores(parse, jobs)));
         return command;
     }
 
-    public static Option<string?> MoverOption() => new("--mover") { Description = "the mover's Setup id (default on the sample: its forged person 0x02001100; required on a real dat)", HelpName = "ID" };
+    public static Option<uint?> MoverOption() => ValueOptions.Single("--mover", "ID",
+        "the mover's Setup id (default on the sample: its forged person 0x02001100; required on a real dat)", text => ArgumentParsing.SetupId(text, "--mover"));
 
-    /// <summary>batch's `--movement IDS`: the object Setups whose movement cases a batch adds.</summary>
-    public static Option<string?> MovementOption() => new("--movement")
-    {
-        Description = "also write these objects' movement cases (comma-separated Setup ids, e.g. 0x020019FF) into movement/, listed in index.json",
-        HelpName = "IDS",
-    };
+    /// <summary>batch's `--movement ID` (repeatable): the object Setups whose movement cases a batch adds.</summary>
+    public static Option<uint[]> MovementOption() => ValueOptions.Repeated("--movement", "ID",
+        "also write this object's movement cases into movement/, listed in index.json (repeatable)", text => ArgumentParsing.SetupId(text, "--movement"));
 
-    /// <summary>What `--movement IDS [--mover ID]` selects (null without --movement); the mover must be in the dat.</summary>
-    public static MovementSelection? Selection(string? ids, string? moverText, OpenedDat dat)
+    /// <summary>What `--movement ID… [--mover ID]` selects (null without --movement); the mover must be in the dat.</summary>
+    public static MovementSelection? Selection(IReadOnlyList<uint> setups, uint? moverId, OpenedDat dat)
     {
-        if (ids is null)
+        if (setups.Count == 0)
         {
-            if (moverText is not null) throw new CliException(ExitCodes.Usage, "--mover applies to --movement: add --movement IDS");
+            if (moverId is not null) throw new CliException(ExitCodes.Usage, "--mover applies to --movement: add --movement ID");
             return null;
         }
-        var setups = ids.Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries)
-            .Select(t => ArgumentParsing.SetupId(t, "--movement")).Distinct().Order().ToArray();
-        if (setups.Length == 0) throw new CliException(ExitCodes.Usage, "--movement: give one or more Setup ids, comma-separated, e.g. 0x020019FF");
-        var mover = MoverId(moverText, dat);
-        if (MoverSetup.Read(dat.Portal, mover) is null)
-            throw new CliException(ExitCodes.NotInDat, $"--mover: Setup {JsonIds.Format(mover)} is not in {dat.Description}: check the id");
-        return new MovementSelection(setups, mover);
+        var mover = MoverId(moverId, dat);
+        RequireMover(mover, dat);
+        return new MovementSelection([.. setups.Distinct().Order()], mover);
     }
 
-    private static uint MoverId(string? text, OpenedDat dat) => text is not null ? ArgumentParsing.SetupId(text, "--mover")
-        : dat.IsSample ? SampleSpecAuthor.MoverSetup
-        : throw new CliException(ExitCodes.Usage, "pass --mover ID, the Setup of the character that walks (a real dat has no default mover: docs/movement.md)");
+    private static uint MoverId(uint? id, OpenedDat dat) => id ?? (dat.IsSample ? SampleSpecAuthor.MoverSetup
+        : throw new CliException(ExitCodes.Usage, "pass --mover ID, the Setup of the character that walks (a real dat has no default mover: docs/movement.md)"));
 
-    private static IReadOnlyList<DoorState>? States(string? text) => text switch
-    {
-        null => null,
-        "closed" => [DoorState.Closed],
-        "open" => [DoorState.Open],
-        _ => throw new CliException(ExitCodes.Usage, $"--state: '{text}' is not a door state: use closed or open"),
-    };
+    private static Mover RequireMover(uint id, OpenedDat dat) => MoverSetup.Read(dat.Portal, id)
+        ?? throw new CliException(ExitCodes.NotInDat, $"--mover: Setup {JsonIds.Format(id)} is not in {dat.Description}: check the id");
 
-    private static int Run(CliConsole console, string? setupText, bool doors, string? setupsFile, string? moverText,
+    private static int Run(CliConsole console, uint? single, bool doors, string? setupsFile, uint? moverId,
         IReadOnlyList<DoorState>? states, string? datPath, string outDir, int jobs)
     {
         var clock = Stopwatch.StartNew();
-        if ((setupText is null ? 0 : 1) + (doors ? 1 : 0) + (setupsFile is null ? 0 : 1) != 1)
+        if ((single is null ? 0 : 1) + (doors ? 1 : 0) + (setupsFile is null ? 0 : 1) != 1)
             throw new CliException(ExitCodes.Usage, "move: give exactly one of --setup ID, --doors and --setups FILE");
-        var single = setupText is null ? (uint?)null : ArgumentParsing.SetupId(setupText);
-        if (moverText is not null) ArgumentParsing.SetupId(moverText, "--mover");
         var list = setupsFile is null ? null : SelectionOptions.ReadSetupList(setupsFile);
-        OutputPaths.RequireNamed(outDir);
+        OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, null, console);
-        var moverSetup = MoverId(moverText, dat);
-        var walker = MoverSetup.Read(dat.Portal, moverSetup)
-            ?? throw new CliException(ExitCodes.NotInDat, $"--mover: Setup {JsonIds.Format(moverSetup)} is not in {dat.Description}: check the id");
+        var moverSetup = MoverId(moverId, dat);
+        var walker = RequireMover(moverSetup, dat);
         IReadOnlyList<uint> ids;
         if (single is { } id)
         {
@@ -105,21 +91,25 @@ public static class MoveCommand
             ids = plan.Setups.Select(s => s.Id).ToArray();
         }
 
+        using var folder = OutputFolder.Open(outDir);
         long bytes = 0;
         var cases = 0;
         foreach (var objectId in ids)
         {
             console.Interrupted.ThrowIfCancellationRequested();
             var generated = MovementSuiteBuilder.Build(dat.Portal, objectId, moverSetup, walker, DoorCatalog.Find(objectId) is not null, states, jobs, console.Interrupted);
-            bytes += DumpCommand.Write(console, outDir, MovementExport.Files(generated));
+            var files = MovementExport.Files(generated).Select(f => (f.RelativePath, f.Content)).ToArray();
+            folder.RefuseForeign(files);
+            bytes += folder.WriteEach(files, console.Out, console.Interrupted);
             cases += generated.Suite.Cases.Count;
             console.Out.WriteLine($"move {JsonIds.Format(objectId)}: {Summary(generated.Suite)}");
         }
+        folder.RequireStillInPlace();
         console.Out.WriteLine($"move: {ids.Count} object(s), {cases} case(s), mover {JsonIds.Format(moverSetup)}, {bytes} bytes in {clock.Elapsed.TotalSeconds:0.000} s");
         return ExitCodes.Ok;
     }
 
-    /// <summary>"616 case(s): 300 blocked, 316 reached; 4 fragile".</summary>
+    /// <summary>"616 case(s) in closed, open: 44 blocked, 396 reached, 176 slid; 0 fragile".</summary>
     private static string Summary(MovementSuite suite)
     {
         var classes = suite.Cases.GroupBy(c => c.Outcome.Class).OrderBy(g => g.Key, StringComparer.Ordinal).Select(g => $"{g.Count()} {g.Key}");
