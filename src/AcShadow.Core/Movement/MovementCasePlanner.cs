@@ -87,7 +87,10 @@ public static class MovementCasePlanner
         return plans;
     }
 
-    private static float Radius0(Mover mover) => mover.Spheres.Count > 0 ? mover.Spheres[0].Radius * mover.Scale : 0.1f;
+    /// <summary>Sphere 0 as SPHEREPATH::init_sphere takes it: the Setup's first, or retail's dummy sphere.</summary>
+    private static Fixtures.Geometry.Sphere Sphere0(Mover mover) => mover.Spheres.Count > 0 ? mover.Spheres[0] : MovementConstants.DummySphere;
+
+    private static float Radius0(Mover mover) => Sphere0(mover).Radius * mover.Scale;
 
     /// <summary>
     /// A walk from <paramref name="start"/> (lifted so sphere 0 rests on the floor) at <paramref name="heading"/>
@@ -100,7 +103,7 @@ public static class MovementCasePlanner
         var direction = heading.Cos * normal + heading.Sin * left;
         var velocity = speed * direction;
         var frames = (int)MathF.Ceiling(distance / (speed * Quantum * heading.Cos));
-        var sphere0 = mover.Spheres.Count > 0 ? mover.Spheres[0] : new Fixtures.Geometry.Sphere(new Vector3(0f, 0f, 0.1f), 0.1f);
+        var sphere0 = Sphere0(mover);
         var lift = (sphere0.Radius - sphere0.Center.Z) * mover.Scale;
         var walk = new Walk(start with { Z = MovementSubject.FloorZ + lift }, velocity, MovementSubject.FloorZ, frames, Quantum);
         var d = -(normal.X * gatePoint.X + normal.Y * gatePoint.Y + normal.Z * gatePoint.Z);

@@ -34,12 +34,12 @@ public static class MovementSuiteBuilder
         var poses = new Dictionary<string, PoseProvenance>();
         var plans = new List<MovementCasePlan>();
         // The gate and the walks are laid out on the closed (resting) door, so both states share them.
-        var (closed, _) = subject.Build(dat, DoorState.Closed);
-        var footprint = MovementFootprint.Of(closed);
+        var closed = subject.Build(dat, DoorState.Closed);
+        var footprint = MovementFootprint.Of(closed.Object);
         foreach (var state in chosen)
         {
             var name = !isDoor ? "default" : state == DoorState.Open ? "open" : "closed";
-            var (obj, set) = subject.Build(dat, state);
+            var (obj, set) = state == DoorState.Closed ? closed : subject.Build(dat, state);
             objects[name] = obj;
             poses[name] = set.Pose;
             plans.AddRange(isDoor ? MovementCasePlanner.Door(footprint, mover, name) : MovementCasePlanner.Object(footprint, mover, name));

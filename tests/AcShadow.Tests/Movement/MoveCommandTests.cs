@@ -104,6 +104,20 @@ public sealed class MoveCommandTests : IClassFixture<MoveCommandTests.DoorSuite>
         Assert.Contains("{\"f\": 1, \"valid\": true, \"end\": [", text);
     }
 
+    [Fact]
+    public void Another_object_is_walked_from_16_headings_in_its_one_pose()
+    {
+        // The sample's three-part static: 16 compass headings × 7 lateral offsets × walk and run, no door states.
+        using var dir = new TempDir();
+        Assert.Equal(ExitCodes.Ok, CliRun.Of("move", "--setup", "0x02003000", "--out", dir.Path).ExitCode);
+        var suite = MovementFileReader.Read(File.ReadAllText(Path.Combine(dir.Path, "movement", "0x02003000.movement.json")),
+            id => CompiledBsp.Compile(BspFileReader.Read(File.ReadAllText(Path.Combine(dir.Path, FileFormats.Bsp.PathFor(id))))));
+        Assert.Equal(["default"], suite.Objects.Keys);
+        Assert.Equal(16 * 7 * 2, suite.Cases.Count);
+        // Aimed at its centre, a head-on walk never reaches the far side: the static is solid.
+        Assert.All(suite.Cases.Where(c => c.Id.Contains("/lat+0.000/", StringComparison.Ordinal)), c => Assert.NotEqual(MovementOutcome.Reached, c.Outcome.Class));
+    }
+
     [Theory]
     [InlineData(ExitCodes.Usage, "--state", "ajar")]
     [InlineData(ExitCodes.NotInDat, "--mover", "0x0200FFF0")]
