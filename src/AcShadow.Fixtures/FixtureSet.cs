@@ -3,6 +3,8 @@ using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
 
+using AcShadow.Fixtures.Movement;
+
 namespace AcShadow.Fixtures;
 
 /// <summary>
@@ -45,6 +47,14 @@ public sealed class FixtureSet
             return fixture;
         }
     }
+
+    /// <summary>
+    /// An object's movement cases (<c>movement/0x%08X.movement.json</c>, written by <c>acshadow move</c> or
+    /// <c>batch --movement</c>), with the BSP dumps its shapes name read from this folder's gfxobjs/.
+    /// </summary>
+    public MovementSuite Movement(uint setupId) =>
+        MovementFileReader.Read(File.ReadAllText(Path.Combine(Folder, FileFormats.Movement.PathFor(setupId))),
+            id => File.Exists(Path.Combine(Folder, FileFormats.Bsp.PathFor(id))) ? BspFileReader.Read(File.ReadAllText(Path.Combine(Folder, FileFormats.Bsp.PathFor(id)))) : null);
 
     /// <summary>An indoor cell's fixture (<c>cells/0x%08X.cell.json</c>), loaded once.</summary>
     public CellFixture Cell(uint cellId)

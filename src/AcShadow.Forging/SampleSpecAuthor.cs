@@ -17,6 +17,8 @@ public static class SampleSpecAuthor
     public const uint SinglePartDoorSetup = 0x0200024F, SinglePartDoor = 0x01000A10;
     public const uint DoubleDoorSetup = 0x02000281, DoubleDoorLeaf = 0x01000B20, DoubleDoorLintel = 0x01000B21, DoubleDoorFrame = 0x01000B22;
     public const uint CreatureSetup = 0x02001000, CreatureTorso = 0x01001000, CreatureHead = 0x01001001, CreatureLeg = 0x01001002;
+    /// <summary>The person-sized two-sphere mover `acshadow move` walks on the sample (synthetic: holtburger's human values).</summary>
+    public const uint MoverSetup = 0x02001100;
     public const uint ItemSetup = 0x02002000, ItemGem = 0x01002000;
     public const uint StaticSetup = 0x02003000, Pedestal = 0x01003000, LBlock = 0x01003001, Column = 0x01003002;
     public const uint FlagWithoutBspSetup = 0x02003100, OtherOnlySetup = 0x02003200, NoPlacementSetup = 0x02003300;
@@ -141,6 +143,19 @@ public static class SampleSpecAuthor
                 StepUpHeight = 0.6,
                 StepDownHeight = 0.6,
                 Flags = ["AllowFreeHeading"],
+            },
+            new SetupSpec
+            {
+                Id = Hex(MoverSetup),
+                Comment = "mover: a person-sized walker for `move` (SYNTHETIC, not read from a retail dat): foot sphere (0,0,0.475) and head sphere (0,0,1.35), r 0.48, "
+                    + "step up 0.6 m, step down 1.5 m (holtburger's human values); the creature torso as its drawing-only part",
+                Parts = [Hex(CreatureTorso)],
+                Placements = Place(("Resting", [At(0, 0, 0)])),
+                Spheres = [new SphereSpec { Center = [0, 0, 0.475], Radius = 0.48 }, new SphereSpec { Center = [0, 0, 1.35], Radius = 0.48 }],
+                Radius = 0.48,
+                Height = 1.83,
+                StepUpHeight = 0.6,
+                StepDownHeight = 1.5,
             },
             new SetupSpec
             {

@@ -40,10 +40,12 @@ public static class BatchCommand
         var pose = new PoseOptions();
         var cells = new Option<bool>("--cells") { Description = "with --landblock: also write its indoor cells (the default)" };
         var noCells = new Option<bool>("--no-cells") { Description = "with --landblock: objects only, no indoor cells" };
+        var movement = MoveCommand.MovementOption();
+        var mover = MoveCommand.MoverOption();
         var command = new Command("batch", "Export many Setups (door catalog, all, a list, a landblock's scene) with index.json")
         {
             outDir, dat, selection.CellDat, selection.Doors, selection.All, selection.Setups, selection.Landblock,
-            cells, noCells, policy, scale, jobs, quiet, incremental, format,
+            cells, noCells, policy, scale, jobs, quiet, incremental, format, movement, mover,
         };
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse => Run(console,
@@ -55,7 +57,8 @@ public static class BatchCommand
             SelectionOptions.WorkersOrAllCores(parse, jobs),
             parse.GetValue(quiet),
             parse.GetValue(incremental),
-            parse.GetValue(format) ?? OutputFormats.Canonical));
+            parse.GetValue(format) ?? OutputFormats.Canonical,
+            parse.GetValue(movement) ?? [], parse.GetValue(mover)));
         return command;
     }
 
@@ -67,12 +70,13 @@ public static class BatchCommand
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellPath, string outDir,
-        ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats)
+        ShapeBuildOptions options, int jobs, bool quiet, bool incremental, OutputFormats formats, uint[] movementIds, uint? moverId)
     {
         var clock = Stopwatch.StartNew();
         OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
+        var movement = MoveCommand.Selection(movementIds, moverId, dat);
         using var folder = OutputFolder.Open(outDir);
         var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
         {
@@ -80,6 +84,7 @@ public static class BatchCommand
             Pose = options.Pose,
             DoorState = options.DoorState,
             MotionTable = options.MotionTable,
+            Movement = movement,
         };
         RefuseForeignFiles(folder, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.

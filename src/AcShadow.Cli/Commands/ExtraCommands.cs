@@ -13,6 +13,7 @@ public static class ExtraCommands
         yield return VerifyCommand.Create(console);
         yield return ChartCommand.Create(console);
         yield return SceneCommand.Create(console);
+        yield return MoveCommand.Create(console);
         yield return ViewCommand.Create(console);
         yield return DoctorCommand.Create(console);
         yield return FormatsCommand.Create(console);

@@ -29,6 +29,7 @@ public static class CommandExamples
             "acshadow batch --doors --out door-fixtures --format acdream --jobs 4",
             "acshadow batch --setups ids.txt --out fixtures --incremental --quiet",
             "acshadow batch --landblock 0xA9B4 --no-cells --out outdoors",
+            "acshadow batch --doors --movement 0x020019FF --out fixtures",
         ],
         ["audit"] =
         [
@@ -50,6 +51,11 @@ public static class CommandExamples
         [
             "acshadow scene --landblock 0xA9B4 --out compiled-a9b4",
             "acshadow scene --landblock 0xA9B4 --dat ~/ac/client_portal.dat --cell-dat ~/ac/client_cell_1.dat --out compiled --mover-radius 0.48 --mover-radius 1.2 --tolerance 0.5",
+        ],
+        ["move"] =
+        [
+            "acshadow move --setup 0x020019FF --out cases",
+            "acshadow move --doors --dat ~/ac/client_portal.dat --mover 0x02000001 --state closed --out door-cases",
         ],
         ["view"] =
         [

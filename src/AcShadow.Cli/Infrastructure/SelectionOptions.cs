@@ -74,7 +74,7 @@ public sealed class SelectionOptions
     /// <summary>The most a --setups file may hold: 64 Ki ids of 11 bytes each and room for comments, far past any dat's Setups.</summary>
     public const int MaxSetupListBytes = 16 << 20;
 
-    private static SetupList ReadSetupList(string path)
+    internal static SetupList ReadSetupList(string path)
     {
         if (!File.Exists(path))
             throw new CliException(ExitCodes.Usage, $"--setups: {path} does not exist: pass a text file with one Setup id a line");

@@ -64,6 +64,7 @@ public static class BatchIndexReader
                 Pose = Pose(inputs),
                 DoorState = State(inputs),
                 MotionTable = MotionTable(inputs),
+                Movement = Movement(inputs),
             };
         });
         return new BatchIndex(body.Inputs, body.Files);
@@ -81,6 +82,16 @@ public static class BatchIndexReader
         if (!inputs.TryGetProperty("doorState", out var s)) return DoorState.Closed;
         var text = s.ValueKind == JsonValueKind.String ? s.GetString()! : "";
         return PoseNames.TryParse(text, out DoorState state) ? state : throw new FormatException($"$.inputs.doorState \"{text}\" is not closed or open");
+    }
+
+    private static MovementSelection? Movement(JsonElement inputs)
+    {
+        if (!inputs.TryGetProperty("movement", out var m)) return null;
+        uint IdOf(JsonElement e, string where) => e.ValueKind == JsonValueKind.String && JsonIds.TryParse(e.GetString(), out var id) ? id
+            : throw new FormatException($"{where} is not a hex id");
+        if (m.ValueKind != JsonValueKind.Object || !m.TryGetProperty("setups", out var setups) || setups.ValueKind != JsonValueKind.Array || !m.TryGetProperty("mover", out var mover))
+            throw new FormatException("$.inputs.movement needs setups (an array of ids) and mover");
+        return new MovementSelection([.. setups.EnumerateArray().Select(e => IdOf(e, "$.inputs.movement.setups[]"))], IdOf(mover, "$.inputs.movement.mover"));
     }
 
     private static uint? MotionTable(JsonElement inputs)

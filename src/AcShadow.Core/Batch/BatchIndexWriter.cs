@@ -101,6 +101,8 @@ public static class BatchIndexWriter
             .Add("doorState", inputs.DoorState.Name())
             .Add("motionTable", inputs.MotionTable is { } table ? JsonIds.Format(table) : null)
             .Add("selection", chosen);
+        if (inputs.Movement is { } movement)
+            json.Add("movement", new JsonObj().Add("setups", JsonArr.Of(movement.Setups.Select(JsonIds.Format))).Add("mover", JsonIds.Format(movement.Mover)));
         return inputs.Formats == OutputFormats.Canonical ? json : json.Add("formats", inputs.Formats.Name());
     }
 

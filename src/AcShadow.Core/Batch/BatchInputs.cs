@@ -22,6 +22,9 @@ public sealed record BatchInputs(DatSourceInfo Dat, DatSourceInfo? CellDat, Shap
     public DoorState DoorState { get; init; } = DoorState.Closed;
     public uint? MotionTable { get; init; }
 
+    /// <summary>`--movement`: movement suites the batch adds (null: none; index.json records it only when set).</summary>
+    public MovementSelection? Movement { get; init; }
+
     /// <summary>The build options these inputs stand for.</summary>
     public ShapeBuildOptions BuildOptions() =>
         new(Policy, EntityScale) { Pose = Pose, DoorState = DoorState, MotionTable = MotionTable };

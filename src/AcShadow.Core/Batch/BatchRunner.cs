@@ -1,10 +1,12 @@
 using System.Collections.Concurrent;
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
+using AcShadow.Core.Movement;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Batch;
@@ -108,12 +110,40 @@ public static class BatchRunner
             progress?.Invoke(new BatchProgress(Interlocked.Increment(ref done), total));
         }
 
+        if (inputs.Movement is { } movement) AddMovement(dat, movement, jobs, write, files, skipped, cancellation);
+
         var ordered = files.Values.ToArray();
         var sortedSkipped = skipped.OrderBy(s => s.Id).ToArray();
         var state = new IncrementalState(IncrementalState.ToolKey(options, inputs.Formats), records);
         return new BatchSummary(ordered, inputs, sortedSkipped, records.Count,
             ordered.Where(f => f.Kind is FixtureKind.Bsp or FixtureKind.AcdreamGfxObj).Select(f => f.Id).Distinct().Count(),
             ordered.Count(f => f.Kind == FixtureKind.Scene), new DiagnosticCount(diagnostics, withDiagnostics), reused, state);
+    }
+
+    /// <summary>
+    /// `--movement`: each object's movement suite, and the BSP dumps it names that the Setups did not already
+    /// write. Always in the canonical format (the cases reference the canonical BSP dumps). An object or mover
+    /// the dat lacks is skipped.
+    /// </summary>
+    private static void AddMovement(IDatSource dat, MovementSelection movement, int jobs, Action<OutputFile> write,
+        SortedDictionary<string, FileEntry> files, List<SkippedItem> skipped, CancellationToken cancellation)
+    {
+        var mover = MoverSetup.Read(dat, movement.Mover);
+        foreach (var id in movement.Setups)
+        {
+            if (mover is null || dat.ReadSetup(id) is null)
+            {
+                skipped.Add(new SkippedItem(mover is null ? movement.Mover : id, SkippedItem.NotInDat, SelectionSource.None));
+                continue;
+            }
+            var generated = MovementSuiteBuilder.Build(dat, id, movement.Mover, mover, DoorCatalog.Find(id) is not null, null, jobs, cancellation);
+            foreach (var file in MovementExport.Files(generated))
+            {
+                if (files.ContainsKey(file.RelativePath)) continue;
+                write(file);
+                files[file.RelativePath] = FileEntry.Of(file);
+            }
+        }
     }
 
     /// <summary>A Setup that cannot be decoded is skipped with the reason; other Setups go on.</summary>

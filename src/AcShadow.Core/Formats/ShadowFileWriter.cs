@@ -27,7 +27,7 @@ public static class ShadowFileWriter
     /// <summary>A BSP dump's path relative to a shadow file (setups/ and gfxobjs/ are siblings).</summary>
     private static string BspReference(uint gfxObjId) => "../" + FileFormats.Bsp.PathFor(gfxObjId);
 
-    private static JsonObj Pose(PoseProvenance p) => new JsonObj()
+    internal static JsonObj Pose(PoseProvenance p) => new JsonObj()
         .Add("policy", p.Policy)
         .Add("source", p.Source)
         .Add("motionTable", Id(p.MotionTableId))
@@ -62,7 +62,7 @@ public static class ShadowFileWriter
     private static IEnumerable<string> FlagNames(SetupFlags flags) =>
         Enum.GetValues<SetupFlags>().Where(f => f != SetupFlags.None && flags.HasFlag(f)).Select(f => f.ToString());
 
-    private static JsonNode Shape(ShadowShape s, Func<uint, string> bspReference)
+    internal static JsonNode Shape(ShadowShape s, Func<uint, string> bspReference)
     {
         var obj = new JsonObj()
             .Add("source", s.Source.Name())

@@ -15,4 +15,6 @@ public enum FixtureKind
     Cell,
     /// <summary>An indoor cell in acdream's EnvCell fixture shape.</summary>
     AcdreamCell,
+    /// <summary>An object Setup's movement cases, movement/0x%08X.movement.json.</summary>
+    Movement,
 }

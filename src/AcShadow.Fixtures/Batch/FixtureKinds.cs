@@ -15,6 +15,7 @@ internal static class FixtureKinds
         FixtureKind.AcdreamGfxObj => FileFormats.AcdreamGfxObj,
         FixtureKind.Cell => FileFormats.Cell,
         FixtureKind.AcdreamCell => FileFormats.AcdreamCell,
+        FixtureKind.Movement => FileFormats.Movement,
         _ => throw new ArgumentOutOfRangeException(nameof(kind)),
     };
 

@@ -26,6 +26,10 @@ internal static class FileFormats
     public static FileFormat Cell { get; } = new("cell", "acshadow.cell/1", "cells/0x%08X.cell.json",
         "one indoor cell (EnvCell): its frames, physics polygons with planes, PhysicsBSP, portals and the objects inside");
 
+    /// <summary>One object Setup's golden movement suite (every case of every state it was generated in).</summary>
+    public static FileFormat Movement { get; } = new("movement", "acshadow.movement-case/1", "movement/0x%08X.movement.json",
+        "one object Setup's golden movement cases: the object per state, the mover, walks and the reference's frames and outcomes");
+
     public static FileFormat Index { get; } = new("index", "acshadow.index/1", "index.json",
         "a batch's inputs and every file it wrote, with SHA-256");
 
@@ -48,5 +52,5 @@ internal static class FileFormats
 
     /// <summary>In the order <c>acshadow formats</c> lists them.</summary>
     public static IReadOnlyList<FileFormat> All { get; } =
-        [Shadow, Bsp, Scene, CompiledScene, Cell, Index, Audit, Doctor, AcdreamGfxObj, AcdreamCell];
+        [Shadow, Bsp, Scene, CompiledScene, Cell, Movement, Index, Audit, Doctor, AcdreamGfxObj, AcdreamCell];
 }

@@ -28,9 +28,9 @@ public sealed class LayeringTests
     {
         ["AcShadow.Files"] = Layers.Of("AcShadow.Files", ""),
         ["AcShadow.Fixtures"] = Layers.Of("AcShadow.Fixtures",
-            "Geometry", "Json", "Shapes", "Bsp", "Collision", "Scenes", "Cells", "Formats", "Batch", ""),
+            "Geometry", "Json", "Shapes", "Bsp", "Collision", "Movement", "Scenes", "Cells", "Formats", "Batch", ""),
         ["AcShadow.Core"] = Layers.Of("AcShadow.Core",
-            "Json", "Dat.Binary", "Dat.Objects", "Dat", "Catalog", "Poses", "Shapes", "Bsp", "Formats", "Export",
+            "Json", "Dat.Binary", "Dat.Objects", "Dat", "Catalog", "Poses", "Shapes", "Bsp", "Movement", "Formats", "Export",
             "Scenes", "Cells", "Batch", "Verify"),
         ["AcShadow.Forging"] = Layers.Of("AcShadow.Forging", "Spec", "Geometry", "Bsp", ""),
         ["AcShadow.Analysis"] = Layers.Of("AcShadow.Analysis",

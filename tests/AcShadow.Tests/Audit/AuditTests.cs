@@ -54,10 +54,10 @@ public class AuditTests
     public void Summary_counts_match_the_sample()
     {
         var s = SampleReport().Summary;
-        Assert.Equal(14, s["setups"]);
+        Assert.Equal(15, s["setups"]);
         Assert.Equal(11, s["bsp"]);
         Assert.Equal(1, s["cylinders"]);
-        Assert.Equal(2, s["spheres"]);
+        Assert.Equal(3, s["spheres"]);
         Assert.Equal(0, s["none"]);
         Assert.Equal(2, s["flagMismatch"]);
         Assert.Equal(1, s["missingParts"]);
@@ -118,7 +118,7 @@ public class AuditTests
     {
         var onlyBsp = SampleReport(new AuditQuery(OnlyBsp: true));
         Assert.Equal(11, onlyBsp.Rows.Count);
-        Assert.Equal(14, onlyBsp.Audited);
+        Assert.Equal(15, onlyBsp.Audited);
         Assert.Equal([0x02003000u, 0x02003100u], SampleReport(new AuditQuery(FlagMismatch: true)).Rows.Select(r => r.SetupId));
         var low = SampleReport(new AuditQuery(MaxCoverage: 0.2));
         Assert.All(low.Rows, r => Assert.True(r.Coverage <= 0.2));
@@ -141,7 +141,7 @@ public class AuditTests
         Assert.Equal(0, csv.ExitCode);
         var lines = File.ReadAllLines(csvPath);
         Assert.Equal(string.Join(',', AuditColumns.All.Select(c => c.Key)), lines[0]);
-        Assert.Equal(15, lines.Length);
+        Assert.Equal(16, lines.Length);
         Assert.StartsWith("0x0200024F,bsp,1,1,0,", lines[1]);
         Assert.Contains("wrote", csv.Out);
         Assert.Contains("family bsp", csv.Out);
@@ -161,7 +161,7 @@ public class AuditTests
         Assert.Contains("- skipped, not in the dat: 0x0200ABCD", md.Out);
 
         var csvOut = CliRun.Of("audit", "--format", "csv");
-        Assert.Equal(15, csvOut.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
+        Assert.Equal(16, csvOut.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
         Assert.Contains("Summary", csvOut.Error); // the summary stays out of the CSV
     }
 

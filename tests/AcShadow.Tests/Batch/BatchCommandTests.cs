@@ -11,7 +11,7 @@ public class BatchCommandTests
     /// <summary>Every Setup the forged sample holds (src/AcShadow.Forging/Sample/sample.json).</summary>
     public static readonly string[] SampleSetups =
     [
-        "0x0200024F", "0x02000281", "0x02001000", "0x020019FF", "0x02002000", "0x02003000",
+        "0x0200024F", "0x02000281", "0x02001000", "0x02001100", "0x020019FF", "0x02002000", "0x02003000",
         "0x02003100", "0x02003200", "0x02003300", "0x02003400", "0x02003500", "0x02003600", "0x02005000", "0x02006000",
     ];
 
@@ -58,7 +58,7 @@ public class BatchCommandTests
             Assert.Equal(JsonValueKind.Null, inputs.GetProperty("cellDat").ValueKind);
             Assert.Equal("retail", inputs.GetProperty("policy").GetString());
             Assert.True(inputs.GetProperty("selection").GetProperty("all").GetBoolean());
-            Assert.Contains("14 setup(s)", run.Out);
+            Assert.Contains("15 setup(s)", run.Out);
             Assert.Contains("wall time", run.Out);
         }
     }

@@ -12,7 +12,7 @@ namespace AcShadow.Tests.Batch;
 /// </summary>
 public sealed class IncrementalTests
 {
-    private const int SampleSetups = 14;
+    private const int SampleSetups = 15;
 
     [Fact]
     public void A_second_run_with_nothing_changed_reexports_nothing_and_writes_nothing()

@@ -31,6 +31,7 @@ public class CommittedFixturesTests
         var paths = index.RootElement.GetProperty("files").EnumerateArray().Select(f => f.GetProperty("path").GetString()).ToArray();
         Assert.Contains("scene.json", paths);
         Assert.Equal(Batch.BatchCommandTests.SampleSetups.Length, paths.Count(p => p!.StartsWith("setups/")));
+        Assert.Equal(["movement/0x020019FF.movement.json"], paths.Where(p => p!.StartsWith("movement/")));
     }
 
     [Fact]

@@ -16,7 +16,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
 
     public SchemaValidationTests(Outputs outputs) => _outputs = outputs;
 
-    /// <summary>What a user gets from dump, batch (both formats, with a scene) and audit --format json (doors, with the chart columns) on the sample.</summary>
+    /// <summary>What a user gets from dump, batch (both formats, with a scene) audit --format json (doors, with the chart columns), doctor and move (the door and the static) on the sample.</summary>
     public sealed class Outputs : IDisposable
     {
         public TempDir Dir { get; } = new();
@@ -27,6 +27,8 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             Run("batch", "--doors", "--all", "--landblock", "0xA9B4", "--format", "both", "--out", Path.Combine(Dir.Path, "batch"), "--quiet");
             Run("audit", "--doors", "--chart", "--format", "json", "--out", Path.Combine(Dir.Path, "audit.json"));
             Run("doctor", "--out", Path.Combine(Dir.Path, "doctor.json"));
+            Run("move", "--setup", "0x020019FF", "--out", Path.Combine(Dir.Path, "move"));
+            Run("move", "--setup", "0x02003000", "--out", Path.Combine(Dir.Path, "move"));
         }
 
         private static void Run(params string[] args)
@@ -60,6 +62,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
             _ when name.EndsWith(".bsp.json") => "bsp",
             _ when name.EndsWith(".gfxobj.json") => "acdream",
             _ when name.EndsWith(".cell.json") => "cell",
+            _ when name.EndsWith(".movement.json") => "movement",
             _ when Path.GetFileName(Path.GetDirectoryName(path)) == "cells" => "acdream-cell",
             "scene.json" => "scene",
             "compiled-scene.json" => "compiled-scene",
@@ -93,7 +96,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     {
         var validator = LoadSchemas();
         var files = Directory.GetFiles(_outputs.Dir.Path, "*.json", SearchOption.AllDirectories);
-        Assert.Equal(["acdream", "acdream-cell", "audit", "bsp", "cell", "doctor", "index", "scene", "shadow"], files.Select(f => FormatOf(f).Name).Distinct().Order());
+        Assert.Equal(["acdream", "acdream-cell", "audit", "bsp", "cell", "doctor", "index", "movement", "scene", "shadow"], files.Select(f => FormatOf(f).Name).Distinct().Order());
         foreach (var file in files)
         {
             var format = FormatOf(file);
@@ -124,6 +127,7 @@ public sealed class SchemaValidationTests : IClassFixture<SchemaValidationTests.
     [InlineData("dump/gfxobjs/0x010044B5.gfxobj.json", "\"GfxObjId\": 16794805", "\"GfxObjId\": 16794805, \"format\": \"x\"", "/format: : All values fail against the false schema")]
     [InlineData("batch/index.json", "\"kind\": \"acdream\"", "\"kind\": \"gfxobj\"", ": enum:")]
     [InlineData("batch/scene.json", "\"landblockId\": \"0xA9B4FFFE\",", "", ": required:")]
+    [InlineData("move/movement/0x020019FF.movement.json", "\"class\": \"blocked\"", "\"class\": \"stopped\"", ": enum:")]
     public void A_file_that_breaks_its_schema_is_reported(string file, string from, string to, string expected)
     {
         var validator = LoadSchemas();

@@ -19,6 +19,8 @@ public class SampleSetupShapeTests
         { 0x02000281, "union", "cylinder bsp bsp bsp bsp", "Resting", "no-default-state door-motion" },
         { 0x02001000, "retail", "cylinder cylinder", "Resting", "" },
         { 0x02001000, "union", "cylinder cylinder", "Resting", "" },
+        { 0x02001100, "retail", "sphere sphere", "Resting", "" },
+        { 0x02001100, "union", "cylinder cylinder", "Resting", "" },
         { 0x02002000, "retail", "sphere", "Default", "" },
         { 0x02002000, "union", "cylinder", "Default", "" },
         { 0x02003000, "retail", "bsp bsp bsp", "Resting", "flag-mismatch non-uniform-scale" },
