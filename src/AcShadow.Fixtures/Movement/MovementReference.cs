@@ -9,7 +9,7 @@ namespace AcShadow.Fixtures.Movement;
 /// state a frame leaves (contact plane, Contact, OnWalkable, sliding normal, stationary-fall count) is what
 /// the next one starts from, as SetPositionInternal carries it. Deterministic: float32, fixed operation order.
 /// </summary>
-public static class MovementReference
+internal static class MovementReference
 {
     public static IReadOnlyList<MovementFrame> Run(Mover mover, MovementObject? obstacle, Walk walk)
     {

@@ -11,4 +11,10 @@ namespace AcShadow.Fixtures.Movement;
 public sealed record Mover(IReadOnlyList<Sphere> Spheres, float StepUpHeight, float StepDownHeight, float Scale = 1f)
 {
     public bool EdgeSlide { get; init; } = true;
+
+    /// <summary>
+    /// Walks this mover against <paramref name="obstacle"/> (null: the bare floor), frame by frame, as the retail
+    /// client moves it: acshadow's movement reference, the one that wrote the movement cases.
+    /// </summary>
+    public IReadOnlyList<MovementFrame> Run(MovementObject? obstacle, Walk walk) => MovementReference.Run(this, obstacle, walk);
 }

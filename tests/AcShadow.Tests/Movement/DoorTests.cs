@@ -56,6 +56,6 @@ public class DoorTests
         Assert.Equal(0.223f, frames.Max(f => f.Position.Z), 1e-3f);
         Assert.Equal(StandingLift, frames[^1].Position.Z, 1e-4f);
         var (leaf, _) = SampleDoor(DoorState.Closed);
-        Assert.Equal(-0.648f, MovementReference.Run(Human(), leaf, WalkNorth(0.45f, -2f, 40))[^1].Position.Y, 1e-4f);
+        Assert.Equal(-0.648f, Human().Run(leaf, WalkNorth(0.45f, -2f, 40))[^1].Position.Y, 1e-4f);
     }
 }
