@@ -10,6 +10,9 @@ public static class SampleDats
 {
     public const string ResourceName = "AcShadow.Forging.Sample.sample.json";
 
+    /// <summary>The sample's person-sized two-sphere mover Setup: `acshadow move`'s default mover on the sample.</summary>
+    public const uint MoverSetup = 0x02001100;
+
     private static readonly Lazy<string> JsonText = new(() =>
     {
         using var stream = typeof(SampleDats).Assembly.GetManifestResourceStream(ResourceName)

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Movement;
 using AcShadow.Core.Poses;

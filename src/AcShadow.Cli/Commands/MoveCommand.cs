@@ -60,7 +60,7 @@ public static class MoveCommand
         return new MovementSelection([.. setups.Distinct().Order()], mover);
     }
 
-    private static uint MoverId(uint? id, OpenedDat dat) => id ?? (dat.IsSample ? SampleSpecAuthor.MoverSetup
+    private static uint MoverId(uint? id, OpenedDat dat) => id ?? (dat.IsSample ? SampleDats.MoverSetup
         : throw new CliException(ExitCodes.Usage, "pass --mover ID, the Setup of the character that walks (a real dat has no default mover: docs/movement.md)"));
 
     private static Mover RequireMover(uint id, OpenedDat dat) => MoverSetup.Read(dat.Portal, id)

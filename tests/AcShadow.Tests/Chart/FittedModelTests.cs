@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using System.Numerics;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;

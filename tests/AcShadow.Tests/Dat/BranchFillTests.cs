@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using System.Buffers.Binary;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using System.Text.Json;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using System.Numerics;
 using AcShadow.Analysis.Doctor;
 using AcShadow.Core.Dat;

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
@@ -5,7 +6,7 @@ using AcShadow.Core.Poses;
 using AcShadow.Forging;
 using AcShadow.Forging.Spec;
 using AcShadow.Tests.Support;
-using static AcShadow.Forging.SampleSpecAuthor;
+using static AcShadow.Forge.SampleSpecAuthor;
 
 namespace AcShadow.Tests.Forge;
 

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using System.Numerics;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;

@@ -6,7 +6,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Forge;
 using AcShadow.Forging;
-using static AcShadow.Forging.SampleSpecAuthor;
+using static AcShadow.Forge.SampleSpecAuthor;
 
 namespace AcShadow.Tests.Forge;
 

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using AcShadow.Fixtures;
 using System.Numerics;
 using AcShadow.Cli.Infrastructure;

@@ -1,3 +1,4 @@
+using AcShadow.Forge;
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Analysis.Chart;

@@ -1,10 +1,11 @@
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Fixtures.Geometry;
+using AcShadow.Forging;
 using AcShadow.Forging.Geometry;
 using AcShadow.Forging.Spec;
 
-namespace AcShadow.Forging;
+namespace AcShadow.Forge;
 
 /// <summary>
 /// Writes the built-in sample spec in code (a 310-polygon house is not typed by hand). Its JSON,
@@ -18,7 +19,7 @@ public static class SampleSpecAuthor
     public const uint DoubleDoorSetup = 0x02000281, DoubleDoorLeaf = 0x01000B20, DoubleDoorLintel = 0x01000B21, DoubleDoorFrame = 0x01000B22;
     public const uint CreatureSetup = 0x02001000, CreatureTorso = 0x01001000, CreatureHead = 0x01001001, CreatureLeg = 0x01001002;
     /// <summary>The person-sized two-sphere mover `acshadow move` walks on the sample (synthetic: holtburger's human values).</summary>
-    public const uint MoverSetup = 0x02001100;
+    public const uint MoverSetup = SampleDats.MoverSetup;
     public const uint ItemSetup = 0x02002000, ItemGem = 0x01002000;
     public const uint StaticSetup = 0x02003000, Pedestal = 0x01003000, LBlock = 0x01003001, Column = 0x01003002;
     public const uint FlagWithoutBspSetup = 0x02003100, OtherOnlySetup = 0x02003200, NoPlacementSetup = 0x02003300;
