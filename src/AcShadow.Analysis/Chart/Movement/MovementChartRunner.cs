@@ -52,6 +52,8 @@ internal static class MovementChartRunner
             cases[i] = MovementSuiteBuilder.Run(plans[i].Plan, mover, references[plans[i].State]);
         }
 
+        var walkCase = options.Walk is { } walkId ? Array.FindIndex(cases, c => c.Id == walkId) : -1;
+        var walkFrames = new List<IReadOnlyList<MovementFrame>>();
         var results = new List<ModelMovement>(models.Count);
         for (var m = 0; m < models.Count; m++)
         {
@@ -79,10 +81,14 @@ internal static class MovementChartRunner
                 ends[i] = MovementJudge.End(cases[i].Walk, frames[i]);
                 diverging[i] = MovementJudge.FirstDivergingFrame(cases[i].Expected, frames[i]);
             }
+            if (walkCase >= 0) walkFrames.Add(frames[walkCase]);
             results.Add(new ModelMovement(models[m].Name, prepared[0][m].Shapes.Count, verdicts, ends, diverging, frames.Sum(f => (long)f.Count), ns));
         }
         var outlines = prepared[0].Select(p => ModelOutline.Of(p, MovementSubject.Origin)).ToArray();
-        return new ObjectMovementChart(subject.Setup.Id, cases, results, outlines, MovementSubject.Origin + footprint.Min, MovementSubject.Origin + footprint.Max);
+        return new ObjectMovementChart(subject.Setup.Id, cases, results, outlines, MovementSubject.Origin + footprint.Min, MovementSubject.Origin + footprint.Max)
+        {
+            Walk = walkCase >= 0 ? (walkCase, walkFrames) : null,
+        };
     }
 
     /// <summary>The retail shapes as the one object the movement cases walk against (as MovementSubject builds it).</summary>

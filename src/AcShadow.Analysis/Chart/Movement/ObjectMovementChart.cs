@@ -16,6 +16,9 @@ public sealed record ObjectMovementChart(
     Vector3 FootprintMin,
     Vector3 FootprintMax)
 {
+    /// <summary>The case <see cref="MovementChartOptions.Walk"/> names with each model's frames on it (model order), or null.</summary>
+    public (int Case, IReadOnlyList<IReadOnlyList<MovementFrame>> Frames)? Walk { get; init; }
+
     /// <summary>Each case's fragility, in case order.</summary>
     public IReadOnlyList<bool> Fragile { get; } = [.. Cases.Select(c => c.Fragile)];
 
