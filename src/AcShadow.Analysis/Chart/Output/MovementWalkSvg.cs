@@ -38,31 +38,32 @@ public static class MovementWalkSvg
             minY = Math.Min(minY, p.Y - 0.5); maxY = Math.Max(maxY, p.Y + 0.5);
         }
         var panel = new FloorPanel(Left, Top, Panel, minX, minY, maxX, maxY);
-        var svg = new SvgDocument(Math.Max(Left + panel.Width + 30, 640), Top + panel.Height + 40);
+        var svg = new SvgDocument(Math.Max(Left + panel.Width + 30, 1000), Top + panel.Height + 40);
         var r = c.Outcome;
         var o = MovementOutcome.Of(c.Walk, frames, c.Gate);
         svg.Text(20, 30, $"Setup {Id(chart.SetupId)}, walk {c.Id}: {model.Model}", 17, "start", "bold", ChartPalette.Model(m));
         svg.Text(20, 54, $"{model.Model}: {Did(o)}; verdict {MovementVerdicts.Name(verdict).Replace('_', ' ')}", 13, "start", "bold", ChartPalette.Verdict(verdict));
         svg.Text(20, 74, $"{chart.Models[0].Model} (black): {Did(r)}", 13);
-        svg.Text(20, 98, $"{I(frames.Count)} frames of {F(c.Walk.Quantum * 1000, 1)} ms at {F(new Vector2(c.Walk.Velocity.X, c.Walk.Velocity.Y).Length(), 2)} m/s; a dot per frame end; grey: {chart.Models[0].Model}'s outline; dashed: the gate", 11.5);
+        svg.Text(20, 98, $"{I(frames.Count)} frames of {F(c.Walk.Quantum * 1000, 1)} ms at {F(new Vector2(c.Walk.Velocity.X, c.Walk.Velocity.Y).Length(), 2)} m/s; a dot per frame end (the model's wide and coloured, the reference's black over it); grey: {chart.Models[0].Model}'s outline; dashed: the gate", 11.5);
         svg.Text(20, 116, $"grid: 1 m; north up", 11.5);
         for (var x = Math.Ceiling(minX); x <= maxX; x++) svg.Line(panel.X(x), panel.Y(minY), panel.X(x), panel.Y(maxY), ChartPalette.GridLine, 0.6);
         for (var y = Math.Ceiling(minY); y <= maxY; y++) svg.Line(panel.X(minX), panel.Y(y), panel.X(maxX), panel.Y(y), ChartPalette.GridLine, 0.6);
         panel.Outline(svg, chart.Outlines[0], "#d0d0d0", 0.6, "#808080");
         if (m > 0) panel.Outline(svg, chart.Outlines[m], ChartPalette.Model(m), 0.3, ChartPalette.Model(m));
         panel.Gate(svg, c.Gate, "#444444");
-        Path(svg, panel, c.Walk.Start, reference, "#000000", 2.2);
-        if (m > 0) Path(svg, panel, c.Walk.Start, frames, ChartPalette.Verdict(verdict), 1.4);
+        // The model's walk first and wide, the reference's over it, so both show where they coincide.
+        if (m > 0) Path(svg, panel, c.Walk.Start, frames, ChartPalette.Verdict(verdict), 3.2, 2.4);
+        Path(svg, panel, c.Walk.Start, reference, "#000000", 1, 1.2);
         svg.Circle(panel.X(c.Walk.Start.X), panel.Y(c.Walk.Start.Y), 4, "#ffffff", "#000000", 1.2, "start");
         panel.Frame(svg);
         return svg.Render();
     }
 
-    private static void Path(SvgDocument svg, FloorPanel panel, Vector3 start, IReadOnlyList<MovementFrame> frames, string colour, double dot)
+    private static void Path(SvgDocument svg, FloorPanel panel, Vector3 start, IReadOnlyList<MovementFrame> frames, string colour, double width, double dot)
     {
         var line = new StringBuilder();
         panel.Polyline(line, frames.Select(f => f.Position).Prepend(start));
-        svg.Path(line.ToString(), "none", colour, 1.4);
+        svg.Path(line.ToString(), "none", colour, width);
         var dots = new StringBuilder();
         foreach (var f in frames) panel.Dot(dots, f.Position, dot);
         svg.Path(dots.ToString(), colour);
