@@ -24,6 +24,10 @@ public sealed record ModelMovement(
     public int FragileCount(MovementVerdict verdict, IReadOnlyList<bool> fragile) =>
         Verdicts.Where((v, i) => v == verdict && fragile[i]).Count();
 
+    /// <summary>The verdict counts over these cases (fragile ones apart), as the compiled scene's evidence lists them.</summary>
+    public MovementCounts Counts(IReadOnlyList<bool> fragile) =>
+        new(Verdicts.Count, fragile.Count(f => f), [.. MovementVerdicts.All.Select(v => Count(v, fragile))], FragileCount(MovementVerdict.FalsePass, fragile));
+
     /// <summary>False passes, fragile or not: the count a model must keep at zero to be trusted for movement.</summary>
     public int FalsePasses => Verdicts.Count(v => v == MovementVerdict.FalsePass);
 }
