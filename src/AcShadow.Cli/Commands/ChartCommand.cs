@@ -106,9 +106,9 @@ public static class ChartCommand
         if (movementRequest is not null)
         {
             folder.RefuseForeign(MovementFiles.Heads(objectIds));
-            var (moverId, walker) = MoveCommand.Mover(movementRequest.Mover, dat);
+            var (moverId, walker) = MoveCommand.MoverOrStandard(movementRequest.Mover, dat);
             movement = new MovementChartOptions(walker, id => DoorCatalog.Find(id) is not null) { Walk = movementRequest.Walk };
-            console.Out.WriteLine($"chart: walking the movement cases with mover {JsonIds.Format(moverId)}");
+            console.Out.WriteLine($"chart: walking the movement cases with mover {(moverId is { } m ? JsonIds.Format(m) : "the standard human (no --mover)")}");
         }
 
         // The subjects keep their own GfxObj cache; beneath it the dat keeps a bounded working set, so a chart

@@ -11,7 +11,7 @@ namespace AcShadow.Tests.Scenes;
 /// </summary>
 public class SceneMovementTests
 {
-    private static readonly Lazy<CompiledSceneReport> Walked = new(() =>
+    internal static readonly Lazy<CompiledSceneReport> Walked = new(() =>
         SceneCompileTests.Compile(new SceneCompileOptions { Movement = SampleMovementChart.Options with { Walk = null } }));
 
     [Fact]

@@ -45,7 +45,7 @@ public static class MovementWalkSvg
         svg.Text(20, 54, $"{model.Model}: {Did(o)}; verdict {MovementVerdicts.Name(verdict).Replace('_', ' ')}", 13, "start", "bold", ChartPalette.Verdict(verdict));
         svg.Text(20, 74, $"{chart.Models[0].Model} (black): {Did(r)}", 13);
         svg.Text(20, 98, $"{I(frames.Count)} frames of {F(c.Walk.Quantum * 1000, 1)} ms at {F(new Vector2(c.Walk.Velocity.X, c.Walk.Velocity.Y).Length(), 2)} m/s; a dot per frame end (the model's wide and coloured, the reference's black over it); grey: {chart.Models[0].Model}'s outline; dashed: the gate", 11.5);
-        svg.Text(20, 116, $"grid: 1 m; north up", 11.5);
+        svg.Text(20, 116, $"{model.Model}'s events: {Events(frames, c.Walk)}; {chart.Models[0].Model}'s: {Events(reference, c.Walk)}; grid 1 m, north up", 11.5);
         for (var x = Math.Ceiling(minX); x <= maxX; x++) svg.Line(panel.X(x), panel.Y(minY), panel.X(x), panel.Y(maxY), ChartPalette.GridLine, 0.6);
         for (var y = Math.Ceiling(minY); y <= maxY; y++) svg.Line(panel.X(minX), panel.Y(y), panel.X(maxX), panel.Y(y), ChartPalette.GridLine, 0.6);
         panel.Outline(svg, chart.Outlines[0], "#d0d0d0", 0.6, "#808080");
@@ -67,6 +67,14 @@ public static class MovementWalkSvg
         var dots = new StringBuilder();
         foreach (var f in frames) panel.Dot(dots, f.Position, dot);
         svg.Path(dots.ToString(), colour);
+    }
+
+    /// <summary>"stepUp ×1, stepDown ×2, highest +0.20 m": what the transitions did, in order of first occurrence, and the highest the mover rose.</summary>
+    private static string Events(IReadOnlyList<MovementFrame> frames, Walk walk)
+    {
+        var events = frames.SelectMany(f => f.Events).GroupBy(e => e).Select(g => $"{g.Key} ×{I(g.Count())}").ToArray();
+        var highest = frames.Count == 0 ? 0f : frames.Max(f => f.Position.Z) - walk.Start.Z;
+        return (events.Length == 0 ? "none" : string.Join(", ", events)) + $", highest {(highest >= 0 ? "+" : "")}{F(highest, 2)} m";
     }
 
     private static string Did(MovementOutcome o) =>

@@ -41,4 +41,16 @@ public class MovementChartFilesTests
         }
         Assert.Equal(Objects.Length, charts.Count);
     }
+
+    [Fact]
+    public void The_door_story_drawings_in_docs_are_what_chart_movement_draws_now()
+    {
+        var files = SampleMovementChart.Run([SampleChart.Door]).Files;
+        var docs = Path.Combine(Support.RepositoryRoot.Path, "docs", "chart");
+        var names = new[] { "fallback-cylinder", "spheres", "union", "part-boxes", "part-hulls", "retail" }
+            .Select(m => MovementWalkSvg.FileName(SampleChart.Door, m)).Append(MovementMapSvg.FileName(SampleChart.Door));
+        foreach (var name in names)
+            Assert.True(File.ReadAllBytes(Path.Combine(docs, name)).AsSpan().SequenceEqual(files.Single(f => f.RelativePath == name).Content.Span),
+                $"docs/chart/{name} is stale: run scripts/regenerate-drawings.sh");
+    }
 }
