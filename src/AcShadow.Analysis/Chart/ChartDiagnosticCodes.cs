@@ -7,7 +7,7 @@ namespace AcShadow.Analysis.Chart;
 public static class ChartDiagnosticCodes
 {
     /// <summary>A model threw while preparing an object: it answers "nothing collides" there, so every blocked probe is its false pass.</summary>
-    public const string ModelFailed = "model-failed";
+    public const string ModelFailed = Models.ModelDiagnosticCodes.ModelFailed;
     /// <summary>The probe grid would pass <see cref="ChartOptions.MaxGridProbes"/>: its spacing was doubled until it fits.</summary>
     public const string GridCoarsened = "grid-coarsened";
     /// <summary>The stability probes would pass <see cref="ChartOptions.MaxStabilityProbes"/>: faces and edges were probed more coarsely.</summary>

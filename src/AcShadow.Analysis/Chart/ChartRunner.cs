@@ -1,4 +1,5 @@
 using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Chart.Movement;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Shapes;
@@ -26,13 +27,19 @@ internal static class ChartRunner
     /// </summary>
     public static ChartTally Stream(int count, Func<int, ChartSubject?> subjectAt, ChartOptions options, Action<ObjectChart> finished,
         IReadOnlyList<IShapeModel>? models = null, IQueryTimer? timer = null, Action<int, int>? progress = null, int jobs = 1,
-        CancellationToken cancellation = default)
+        CancellationToken cancellation = default, MovementChartOptions? movement = null, ITransitionTimer? transitionTimer = null)
     {
         if (options.Problem() is { } problem) throw new ArgumentException(problem, nameof(options));
         models ??= ShapeModels.All;
         if (models.Count == 0) throw new ArgumentException("at least the reference model is needed", nameof(models));
         ArgumentOutOfRangeException.ThrowIfLessThan(jobs, 1);
         timer ??= new StopwatchQueryTimer();
+        transitionTimer ??= new StopwatchTransitionTimer();
+        ObjectChart ChartOf(ChartSubject subject)
+        {
+            var chart = Chart(subject, options, models, timer, cancellation);
+            return movement is null ? chart : chart with { Movement = MovementChartRunner.Chart(subject, movement, models, transitionTimer, cancellation) };
+        }
         var tally = new ChartTally(models.Select(m => m.Name).ToArray());
         var done = 0;
         void Deliver(ObjectChart? chart)
@@ -49,7 +56,7 @@ internal static class ChartRunner
             for (var i = 0; i < count; i++)
             {
                 cancellation.ThrowIfCancellationRequested();
-                Deliver(subjectAt(i) is { } subject ? Chart(subject, options, models, timer, cancellation) : null);
+                Deliver(subjectAt(i) is { } subject ? ChartOf(subject) : null);
             }
             return tally;
         }
@@ -72,7 +79,7 @@ internal static class ChartRunner
                     i = ++claimed;
                 }
                 if (i >= count) return;
-                var chart = subjectAt(i) is { } subject ? Chart(subject, options, models, timer, cancellation) : null;
+                var chart = subjectAt(i) is { } subject ? ChartOf(subject) : null;
                 lock (gate)
                 {
                     ready[i] = chart;
@@ -89,7 +96,7 @@ internal static class ChartRunner
     }
 
     /// <summary>
-    /// Charts one object. <paramref name="cancellation"/> is heard between models, so Ctrl-C on a huge object
+    /// Charts one object by probes. <paramref name="cancellation"/> is heard between models, so Ctrl-C on a huge object
     /// waits for one model's answers and timing, not the whole object; nothing of a cancelled object is kept.
     /// </summary>
     public static ObjectChart Chart(ChartSubject subject, ChartOptions options, IReadOnlyList<IShapeModel> models, IQueryTimer timer,
@@ -129,18 +136,7 @@ internal static class ChartRunner
         return exact.First(o => o.Timing.MedianNs <= fastest * CostTieFactor).Model;
     }
 
-    internal static PreparedModel Prepare(IShapeModel model, ChartSubject subject)
-    {
-        try
-        {
-            return model.Prepare(subject);
-        }
-        catch (Exception e) when (e is not OutOfMemoryException)
-        {
-            // A model that cannot prepare blocks nothing; the chart goes on and says why.
-            return new PreparedModel(new NothingCollides(), [], [new Diagnostic(ChartDiagnosticCodes.ModelFailed, $"{model.Name} could not prepare Setup 0x{subject.Setup.Id:X8}: {e.Message}")]);
-        }
-    }
+    internal static PreparedModel Prepare(IShapeModel model, ChartSubject subject) => ModelPreparation.Prepare(model, subject);
 
     internal static bool[] Answers(PreparedModel model, Probe[] probes)
     {
@@ -165,10 +161,5 @@ internal static class ChartRunner
         var nearest = NearestDisagreements.Select(probes, expected, answers, referenceGaps, model.Shapes, options.FailuresPerModel);
         var timing = timer.Measure(name, model, probes, options);
         return new ModelOutcome(name, model.Shapes.Count, answers, agree, falsePass, falseBlock, doorway, doorPass, doorBlock, timing, nearest, model.Diagnostics);
-    }
-
-    private sealed class NothingCollides : ISphereOverlap
-    {
-        public bool Overlaps(System.Numerics.Vector3 center, float radius) => false;
     }
 }

@@ -11,9 +11,13 @@ public sealed class ChartTally(IReadOnlyList<string> models)
     public IReadOnlyList<string> Models { get; } = models;
     public int Objects { get; private set; }
 
+    /// <summary>The movement chart's totals (objects charted by movement only).</summary>
+    public Movement.MovementTally Movement { get; } = new(models);
+
     public void Add(ObjectChart chart)
     {
         Objects++;
+        if (chart.Movement is { } movement) Movement.Add(movement);
         for (var m = 0; m < _totals.Length; m++)
         {
             var o = chart.Models[m];

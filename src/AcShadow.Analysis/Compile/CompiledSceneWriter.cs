@@ -1,4 +1,5 @@
 using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Movement;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
@@ -42,6 +43,7 @@ internal static class CompiledSceneWriter
             .Add("moverRadii", JsonArr.Of(options.Chart.Radii, r => JsonNum.Of(r)))
             .Add("tolerancePercent", JsonNum.Of(options.TolerancePercent))
             .Add("ladder", JsonArr.Of(ModelLadder.Names))
+            .Add("mover", options.Movement is { } moving ? MoverJson(moving.Mover) : JsonNull.Value)
             .Add("probes", new JsonObj()
                 .Add("gridSpacing", options.Chart.Spacing)
                 .Add("probeRadius", options.Chart.ProbeRadius)
@@ -147,12 +149,32 @@ internal static class CompiledSceneWriter
             .Add("probes", probes)
             .Add("candidates", JsonArr.Of(c.Candidates, k => new JsonObj()
                 .Add("model", k.Model).Add("shapes", k.Shapes).Add("opsPerQuery", Ops(k.OpsPerQuery))
-                .Add("falsePass", k.FalsePass).Add("falseBlock", k.FalseBlock).Add("accepted", k.Accepted)))
+                .Add("falsePass", k.FalsePass).Add("falseBlock", k.FalseBlock).Add("accepted", k.Accepted)
+                .Add("movement", k.Movement is { } walked ? MovementJson(walked) : JsonNull.Value)))
             .Add("falsePass", c.FalsePass)
             .Add("falseBlock", c.FalseBlock)
+            .Add("movement", c.Candidates.Count > 0 && c.Candidates[^1].Movement is { } chosen ? MovementJson(chosen) : JsonNull.Value)
             .Add("opsPerQuery", new JsonObj().Add("chosen", Ops(c.ChosenOps)).Add("retail", Ops(c.RetailOps)))
             .Add("medianNsPerQuery", new JsonObj().Add("chosen", JsonNum.Of(c.ChosenTiming.MedianNs)).Add("retail", JsonNum.Of(c.RetailTiming.MedianNs)));
     }
+
+    /// <summary>A model's verdicts on the object's movement cases (movement.md §4.2): counts over non-fragile cases, fragile ones apart.</summary>
+    private static JsonObj MovementJson(MovementCounts m) => new JsonObj()
+        .Add("cases", m.Cases)
+        .Add("fragile", m.Fragile)
+        .Add("agree", m[MovementVerdict.Agree])
+        .Add("falsePass", m[MovementVerdict.FalsePass])
+        .Add("falseBlock", m[MovementVerdict.FalseBlock])
+        .Add("deflection", m[MovementVerdict.Deflection])
+        .Add("stepMismatch", m[MovementVerdict.StepMismatch])
+        .Add("standoffDrift", m[MovementVerdict.StandOffDrift])
+        .Add("fragileFalsePass", m.FragileFalsePass);
+
+    /// <summary>The mover the movement cases walk: the spheres a transition uses and its step heights.</summary>
+    private static JsonObj MoverJson(Fixtures.Movement.Mover mover) => new JsonObj()
+        .Add("spheres", JsonArr.Of(mover.Spheres.Take(2), s => new JsonObj().Add("center", s.Center).Add("radius", s.Radius)))
+        .Add("stepUpHeight", mover.StepUpHeight)
+        .Add("stepDownHeight", mover.StepDownHeight);
 
     private static JsonObj ShapeJson(PreparedShape s)
     {

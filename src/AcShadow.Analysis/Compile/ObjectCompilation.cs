@@ -8,9 +8,13 @@ namespace AcShadow.Analysis.Compile;
 
 /// <summary>
 /// One model the compiler tried on an object, in the order tried (fewest counted operations per query
-/// first, <see cref="QueryCost"/>), and whether it qualified.
+/// first, <see cref="QueryCost"/>), and whether it qualified; <see cref="Movement"/>: its verdicts on the object's
+/// movement cases (null when it was not walked: no movement asked, or its static probes already ruled it out).
 /// </summary>
-internal sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, int FalseBlock, bool Accepted, double OpsPerQuery);
+internal sealed record CandidateOutcome(string Model, int Shapes, int FalsePass, int FalseBlock, bool Accepted, double OpsPerQuery)
+{
+    public Chart.Movement.MovementCounts? Movement { get; init; }
+}
 
 /// <summary>
 /// One distinct object of a scene (a Setup or a bare GfxObj, every placement of it shares this) compiled:

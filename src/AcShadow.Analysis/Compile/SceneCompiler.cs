@@ -1,6 +1,7 @@
 using AcShadow.Core.Export;
 using System.Numerics;
 using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Movement;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
@@ -97,8 +98,8 @@ internal static class SceneCompiler
 
     /// <summary>
     /// One object: every model of the ladder counted on the probes (<see cref="QueryCost"/>), then tried
-    /// cheapest count first (ladder order among equal counts) until one qualifies; the chosen model and
-    /// retail timed. Retail always qualifies, so a model that counts more than retail is never tried.
+    /// cheapest count first (ladder order among equal counts) until one qualifies (on the probes and, with
+    /// movement asked, on the object's movement cases: no false pass); the chosen model and retail timed. Retail always qualifies, so a model that counts more than retail is never tried.
     /// </summary>
     public static ObjectCompilation Compile(ChartSubject subject, SceneObjectKind kind, SceneCompileOptions options, IQueryTimer timer)
     {
@@ -116,6 +117,7 @@ internal static class SceneCompiler
         var candidates = new List<CandidateOutcome>();
         var chosen = retailIndex;
         var chosenAnswers = expected;
+        ObjectWalks? walks = null;
         foreach (var m in ModelLadder.ByCost(costs))
         {
             var answers = m == retailIndex ? expected : ChartRunner.Answers(prepared[m], probes);
@@ -127,7 +129,15 @@ internal static class SceneCompiler
             }
             // A model with no shapes for an object that has some is no model of it.
             var accepted = prepared[m].Shapes.Count > 0 && options.Accepts(falsePass, falseBlock, probes.Length);
-            candidates.Add(new CandidateOutcome(ladder[m].Name, prepared[m].Shapes.Count, falsePass, falseBlock, accepted, costs[m]));
+            // Only a model the probes accept is walked: a walk costs far more than a probe.
+            MovementCounts? movement = null;
+            if (accepted && options.Movement is { } moving)
+            {
+                walks ??= ObjectWalks.Lay(subject, moving, ladder[retailIndex]);
+                movement = walks.Walk(ladder[m], null, -1, out _).Counts([.. walks.Cases.Select(c => c.Fragile)]);
+                accepted = movement.FalsePasses == 0;
+            }
+            candidates.Add(new CandidateOutcome(ladder[m].Name, prepared[m].Shapes.Count, falsePass, falseBlock, accepted, costs[m]) { Movement = movement });
             if (!accepted) continue;
             chosen = m;
             chosenAnswers = answers;

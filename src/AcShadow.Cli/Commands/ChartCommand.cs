@@ -5,11 +5,13 @@ using System.Text;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Cells;
 using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Chart.Movement;
 using AcShadow.Analysis.Chart.Output;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Cells;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
@@ -20,10 +22,10 @@ using AcShadow.Fixtures.Json;
 namespace AcShadow.Cli.Commands;
 
 /// <summary>
-/// `acshadow chart [--setup ID ...] [--doors] [--all] [--setups FILE] [--landblock 0xXXYY] --out DIR [--probe-radius R] [--spacing S]`:
-/// every shape model against the retail reference on probes around each Setup (and each bare GfxObj a
-/// landblock places); writes chart.csv,
-/// summary.csv, failures.csv, speed-accuracy.svg and a failure map per Setup (docs/chart.md).
+/// `acshadow chart [--setup ID ...] [--doors] [--all] [--setups FILE] [--landblock 0xXXYY] --out DIR [--probe-radius R] [--spacing S]
+/// [--movement [--mover ID] [--walk CASE]]`: every shape model against the retail reference on probes around each Setup (and each
+/// bare GfxObj a landblock places); writes chart.csv, summary.csv, failures.csv, speed-accuracy.svg and a failure map per Setup;
+/// with --movement also the movement chart: movement-chart.csv, movement-summary.csv and a movement map per object (docs/chart.md).
 /// </summary>
 public static class ChartCommand
 {
@@ -40,9 +42,13 @@ public static class ChartCommand
         var jobs = SelectionOptions.Jobs("objects charted side by side (default 1: times per query are then measured undisturbed)");
         var pose = new PoseOptions();
         var noCells = SelectionOptions.NoCells();
+        var movement = new Option<bool>("--movement") { Description = "also chart every model by movement: walk the movement cases `move` writes through each model (movement-chart.csv, movement-summary.csv, a movement map per object; docs/chart.md)" };
+        var mover = MoveCommand.MoverOption();
+        var walk = new Option<string?>("--walk") { Description = "with --movement: draw this case's walk for every model (movement-walk-<id>-<model>.svg), e.g. closed/out-in/lat+0.450/hdg+00/walk", HelpName = "CASE" };
         var command = new Command("chart", "Chart every collision shape model against the retail reference: agreement, false passes, time per query")
         {
             setup, dat, selection.Doors, selection.All, selection.Setups, selection.Landblock, selection.CellDat, noCells, outDir, radius, spacing, scale, quiet, jobs,
+            movement, mover, walk,
         };
         foreach (var option in pose.All) command.Options.Add(option);
         command.SetAction(parse =>
@@ -61,16 +67,22 @@ public static class ChartCommand
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
             var jobCount = parse.GetValue(jobs) ?? 1;
+            var byMovement = parse.GetValue(movement);
+            if (!byMovement && (parse.GetValue(mover) is not null || parse.GetValue(walk) is not null))
+                throw new CliException(ExitCodes.Usage, "--mover and --walk apply to --movement: add --movement");
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
                 parse.GetValue(scale) ?? 1f, parse.GetValue(quiet), jobCount,
-
-                pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail)));
+                pose.Apply(parse, new Core.Shapes.ShapeBuildOptions(Fixtures.Shapes.ShapePolicy.Retail)),
+                byMovement ? new MovementRequest(parse.GetValue(mover), parse.GetValue(walk)) : null);
         });
         return command;
     }
 
+    /// <summary>What --movement, --mover and --walk ask for.</summary>
+    private sealed record MovementRequest(uint? Mover, string? Walk);
+
     private static int Run(CliConsole console, uint[] ids, BatchSelection selection, string? datPath, string? cellDatPath, string outDir,
-        ChartOptions options, float scale, bool quiet, int jobs, Core.Shapes.ShapeBuildOptions pose)
+        ChartOptions options, float scale, bool quiet, int jobs, Core.Shapes.ShapeBuildOptions pose, MovementRequest? movementRequest)
     {
         var clock = Stopwatch.StartNew();
         OutputFolder.Check(outDir);
@@ -90,6 +102,14 @@ public static class ChartCommand
         using var folder = OutputFolder.Open(outDir);
         var cells = planned?.Scene?.Cells ?? [];
         folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null));
+        MovementChartOptions? movement = null;
+        if (movementRequest is not null)
+        {
+            folder.RefuseForeign(MovementFiles.Heads(objectIds));
+            var (moverId, walker) = MoveCommand.MoverOrStandard(movementRequest.Mover, dat);
+            movement = new MovementChartOptions(walker, id => DoorCatalog.Find(id) is not null) { Walk = movementRequest.Walk };
+            console.Out.WriteLine($"chart: walking the movement cases with mover {(moverId is { } m ? JsonIds.Format(m) : "the standard human (no --mover)")}");
+        }
 
         // The subjects keep their own GfxObj cache; beneath it the dat keeps a bounded working set, so a chart
         // of the whole dat does not hold every object it decoded.
@@ -123,7 +143,7 @@ public static class ChartCommand
         var eta = new WorkWeightedEta(silent ? [] : ChartWork.Of(dat.Portal, order, bareGfxObjs));
         var progress = new ProgressReporter(console.Error, console.IsTerminal, silent, "objects charted", "chart", eta.Remaining);
         var charting = Stopwatch.StartNew();
-        int charted = 0, mapsWritten = 0;
+        int charted = 0, mapsWritten = 0, movementCases = 0, movementMaps = 0;
         long bytes = 0, probes = 0;
         var cheapest = new List<string>();
         var warnings = new WarningSummary(console.Error);
@@ -133,13 +153,16 @@ public static class ChartCommand
             // chart.csv and failures.csv grow object by object in their temporary files and are renamed into
             // place at the end; each failure map is written whole as soon as its object is done, so memory
             // stays flat however many objects there are.
-            long failuresBytes = 0;
+            long failuresBytes = 0, movementBytes = 0;
             var chartBytes = folder.Write("chart.csv", chartCsv =>
                 failuresBytes = folder.Write("failures.csv", failuresCsv =>
+                movementBytes = WriteMovementCsv(folder, movement is not null, movementCsv =>
                 {
                     var chartRows = new StreamWriter(chartCsv, new UTF8Encoding(false), 1 << 16);
                     var failureRows = new StreamWriter(failuresCsv, new UTF8Encoding(false), 1 << 16);
+                    var movementRows = movementCsv is null ? null : new StreamWriter(movementCsv, new UTF8Encoding(false), 1 << 16);
                     var files = ChartFiles.Begin(chartRows, failureRows, options, models);
+                    var movementFiles = movementRows is null ? null : MovementFiles.Begin(movementRows);
                     tally = ChartRunner.Stream(objectIds.Length, SubjectAt, options, chart =>
                     {
                         warnings.Add(JsonIds.Format(chart.SetupId), chart.Models[0].Diagnostics, chart.Notes);
@@ -149,6 +172,15 @@ public static class ChartCommand
                         if (mapsWritten == 0) RemovePreviousTables(outDir);
                         bytes += folder.Write(map.RelativePath, map.Content);
                         mapsWritten++;
+                        if (chart.Movement is { } moved && movementFiles is not null)
+                        {
+                            foreach (var file in movementFiles.Add(moved))
+                            {
+                                bytes += folder.Write(file.RelativePath, file.Content);
+                                movementMaps++;
+                            }
+                            movementCases += moved.Cases.Count;
+                        }
                         charted++;
                         probes += chart.Probes.Count;
                         if (cheapest.Count < 20) cheapest.Add($"  {JsonIds.Format(chart.SetupId)}: cheapest exact model {(chart.CheapestExact.Length == 0 ? "none" : chart.CheapestExact)}");
@@ -157,11 +189,12 @@ public static class ChartCommand
                         eta.Record(done, charting.Elapsed);
                         progress.Report(new BatchProgress(done, total));
                         dat.RequireUnchanged();
-                    }, jobs: jobs, cancellation: console.Interrupted);
+                    }, jobs: jobs, cancellation: console.Interrupted, movement: movement);
                     chartRows.Flush();
                     failureRows.Flush();
-                }));
-            bytes += chartBytes + failuresBytes;
+                    movementRows?.Flush();
+                })));
+            bytes += chartBytes + failuresBytes + movementBytes;
             dat.RequireUnchanged();
         }
         catch (AggregateException e) when (e.InnerExceptions.OfType<CliException>().FirstOrDefault() is { } first)
@@ -194,7 +227,8 @@ public static class ChartCommand
             dat.RequireUnchanged();
         }
         var summaries = tally.Summaries();
-        foreach (var total in ChartFiles.Totals(options, models, tally.Objects, summaries))
+        var movementSummaries = movement is null ? null : tally.Movement.Summaries();
+        foreach (var total in ChartFiles.Totals(options, models, tally.Objects, summaries, movementSummaries))
             bytes += folder.Write(total.RelativePath, total.Content);
         folder.RequireStillInPlace();
 
@@ -205,6 +239,13 @@ public static class ChartCommand
         foreach (var s in summaries)
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {s.FalsePass,7} false pass  {s.FalseBlock,7} false block  {s.Timing.MedianNs,8:0.0} ns/query median"));
+        if (movementSummaries is not null)
+        {
+            w.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  movement: {movementCases} walk(s) per model; verdicts over non-fragile walks (fragile counted apart), time per transition"));
+            foreach (var s in movementSummaries)
+                w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                    $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {string.Join("  ", MovementVerdicts.All.Skip(1).Select(v => $"{s.Counts[(int)v]} {MovementVerdicts.Name(v).Replace('_', ' ')}"))}  {s.FragileCases} fragile ({s.FragileFalsePass} false pass)  {s.NsPerTransition / 1000,8:0.0} µs/transition"));
+        }
         foreach (var line in cheapest) w.WriteLine(line);
         if (cellCharts.Count > 0)
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -216,14 +257,22 @@ public static class ChartCommand
             w.WriteLine($"  skipped {unreadable.Count} (unreadable, see the warnings): {IdSummary.Of(unreadable.Order().ToArray())}");
         if (warnings.Summary() is { } warned) w.WriteLine($"  {warned}");
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  wrote {4 + mapsWritten + (cellCharts.Count > 0 ? 1 : 0)} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
+            $"  wrote {4 + mapsWritten + (cellCharts.Count > 0 ? 1 : 0) + (movement is null ? 0 : 2 + movementMaps)} file(s) ({bytes} bytes) to {outDir} in {clock.Elapsed.TotalSeconds:0.000} s{(jobs > 1 ? $" with {jobs} jobs" : "")}; times are measurements and vary run to run"));
         return ExitCodes.Ok;
+    }
+
+    /// <summary>movement-chart.csv through <paramref name="write"/> when the chart walks (its bytes), else <paramref name="write"/> with no stream (0).</summary>
+    private static long WriteMovementCsv(OutputFolder folder, bool movement, Action<Stream?> write)
+    {
+        if (movement) return folder.Write(MovementFiles.ChartFile, write);
+        write(null);
+        return 0;
     }
 
     /// <summary>The tables and the speed chart a finished run wrote (checked as ours before the run began).</summary>
     private static void RemovePreviousTables(string outDir)
     {
-        foreach (var name in (ReadOnlySpan<string>)["chart.csv", "summary.csv", "failures.csv", "speed-accuracy.svg"])
+        foreach (var name in (ReadOnlySpan<string>)["chart.csv", "summary.csv", "failures.csv", "speed-accuracy.svg", MovementFiles.ChartFile, MovementFiles.SummaryFile])
         {
             var path = OutputPaths.Target(outDir, name);
             try

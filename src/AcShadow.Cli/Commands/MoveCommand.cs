@@ -60,6 +60,17 @@ public static class MoveCommand
         return new MovementSelection([.. setups.Distinct().Order()], mover);
     }
 
+    /// <summary>The mover `--mover ID` names (on the sample, its forged person by default), read from the dat.</summary>
+    public static (uint Id, Mover Mover) Mover(uint? id, OpenedDat dat)
+    {
+        var setup = MoverId(id, dat);
+        return (setup, RequireMover(setup, dat));
+    }
+
+    /// <summary>The mover --mover names, the sample's person on the sample, else (Id null) the standard human (MoverSetup.StandardHuman).</summary>
+    public static (uint? Id, Mover Mover) MoverOrStandard(uint? id, OpenedDat dat) =>
+        id is null && !dat.IsSample ? (null, MoverSetup.StandardHuman) : Mover(id, dat);
+
     private static uint MoverId(uint? id, OpenedDat dat) => id ?? (dat.IsSample ? SampleDats.MoverSetup
         : throw new CliException(ExitCodes.Usage, "pass --mover ID, the Setup of the character that walks (a real dat has no default mover: docs/movement.md)"));
 

@@ -2,12 +2,14 @@ using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Movement;
 using AcShadow.Analysis.Compile;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Bsp;
 using AcShadow.Fixtures.Json;
@@ -37,9 +39,12 @@ public static class SceneCommand
         var scale = CommonOptions.Scale();
         var quiet = new Option<bool>("--quiet") { Description = "no progress display (the summary is still printed)" };
         var noCells = SelectionOptions.NoCells();
+        var mover = ValueOptions.Single("--mover", "ID",
+            "the Setup of the character whose walks a cheaper model must not let past retail's stops (default: the sample's person on the sample, else the standard human: docs/chart.md)",
+            text => ArgumentParsing.SetupId(text, "--mover"));
         var command = new Command("scene", "Compile a landblock: each object's cheapest model that gives retail's answer, with the evidence and the scene's chart")
         {
-            selection.Landblock, dat, selection.CellDat, outDir, radius, tolerance, spacing, scale, quiet, noCells,
+            selection.Landblock, dat, selection.CellDat, outDir, radius, tolerance, spacing, scale, quiet, noCells, mover,
         };
         command.SetAction(parse =>
         {
@@ -60,16 +65,19 @@ public static class SceneCommand
                 TolerancePercent = parse.GetValue(tolerance) ?? 0,
             };
             if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
-            return Run(console, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options, parse.GetValue(quiet));
+            return Run(console, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options, parse.GetValue(quiet), parse.GetValue(mover));
         });
         return command;
     }
 
-    private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet)
+    private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet,
+        uint? moverId)
     {
         var clock = Stopwatch.StartNew();
         OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellDatPath, console);
+        var (moverSetup, walker) = MoveCommand.MoverOrStandard(moverId, dat);
+        options = options with { Movement = new MovementChartOptions(walker, id => DoorCatalog.Find(id) is not null) };
         var scene = SelectionOptions.Plan(selection, dat).Scene!;
         if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
@@ -113,6 +121,9 @@ public static class SceneCommand
             w.WriteLine($"  {group.Key,-18} {group.Count(),4} object(s): {string.Join(' ', group.Select(o => JsonIds.Format(o.Id)).Distinct().Take(8))}{(group.Select(o => o.Id).Distinct().Count() > 8 ? " ..." : "")}");
         var probes = report.Probes();
         w.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  probes checked: {probes.Total} ({probes})"));
+        var walked = report.Compiled.Values.SelectMany(c => c.Candidates).Where(k => k.Movement is not null).ToArray();
+        w.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"  movement: mover {(moverSetup is { } m ? JsonIds.Format(m) : "the standard human (no --mover)")}; {walked.Length} candidate model(s) walked over {report.Compiled.Values.Sum(c => c.Candidates.LastOrDefault()?.Movement?.Cases ?? 0)} case(s), {walked.Count(k => k.Movement!.FalsePasses > 0)} refused for a movement false pass"));
         w.WriteLine(string.Create(CultureInfo.InvariantCulture,
             $"  whole scene over {t.Positions} mover positions: all-retail {t.Retail.MedianNs:0.0} ns, compiled {t.Compiled.MedianNs:0.0} ns per position (median; {t.RetailOps:0.0} and {t.CompiledOps:0.0} counted operations); compiled agrees on {t.Agree} ({t.AgreementPercent:0.000}%), {t.FalsePass} false pass, {t.FalseBlock} false block"));
         if (warnings.Summary() is { } warned) w.WriteLine($"  {warned}");

@@ -10,6 +10,15 @@ namespace AcShadow.Core.Movement;
 /// </summary>
 public static class MoverSetup
 {
+    /// <summary>
+    /// The human mover in circulation (holtburger's values, the forged sample person's too): spheres (0, 0, 0.475)
+    /// and (0, 0, 1.35), r 0.48, step up 0.6 m, step down 1.5 m. Unverified against a retail dat (movement.md):
+    /// `scene` walks with it only when no --mover names the character's Setup.
+    /// </summary>
+    public static Mover StandardHuman { get; } = new(
+        [new Fixtures.Geometry.Sphere(new System.Numerics.Vector3(0f, 0f, 0.475f), 0.48f), new Fixtures.Geometry.Sphere(new System.Numerics.Vector3(0f, 0f, 1.35f), 0.48f)],
+        0.6f, 1.5f);
+
     /// <summary>The mover Setup, or null when the dat has no such Setup.</summary>
     public static Mover? Read(IDatSource dat, uint setupId)
     {

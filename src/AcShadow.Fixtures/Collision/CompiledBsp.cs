@@ -51,6 +51,20 @@ internal sealed class CompiledBsp
         Diagnostics = diagnostics;
     }
 
+    /// <summary>
+    /// A convex solid as a one-leaf tree (movement.md §4.1: how the chart's part-boxes and part-hulls are run through
+    /// BSPTREE::find_collisions): one solid leaf listing every face, in order, with <paramref name="center"/> and
+    /// <paramref name="radius"/> as its bounding sphere, so its faces step, slide and carry walkable planes as
+    /// a real part's polygons do.
+    /// </summary>
+    internal static CompiledBsp SolidLeaf(uint id, IReadOnlyList<CompiledPolygon> faces, Vector3 center, float radius)
+    {
+        var polygons = faces.ToArray();
+        var leaf = new CompiledBspNode(true, center, radius, Vector3.Zero, 0f, -1, -1, true, polygons.Length, 0, polygons.Length, 0);
+        var cells = polygons.Length > 0 ? new[] { new SolidCell(0, [], []) } : [];
+        return new CompiledBsp(id, polygons, [leaf], [.. Enumerable.Range(0, polygons.Length)], cells, true, []);
+    }
+
     public static CompiledBsp Compile(BspDump dump)
     {
         var log = new DiagnosticLog();

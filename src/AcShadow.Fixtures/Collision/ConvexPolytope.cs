@@ -21,6 +21,9 @@ internal sealed class ConvexPolytope : ISphereOverlap
     public IReadOnlyList<Vector3> Vertices { get; }
     public IReadOnlyList<CompiledPolygon> Faces => _faces;
 
+    /// <summary>The solid as a one-leaf BSP whose leaf sphere is this polytope's bounding sphere (<see cref="CompiledBsp.SolidLeaf"/>).</summary>
+    internal CompiledBsp ToSolidLeaf(uint id) => CompiledBsp.SolidLeaf(id, _faces, _boundCenter, _boundRadius);
+
     private NearestPolygonIndex? _nearest;
 
     /// <summary>Built on first use and kept, as <see cref="CompiledBsp"/>'s (no delegate per call: it is asked once per ranked probe).</summary>

@@ -11,12 +11,20 @@ namespace AcShadow.Fixtures.Movement;
 /// </summary>
 internal static class MovementReference
 {
-    public static IReadOnlyList<MovementFrame> Run(Mover mover, MovementObject? obstacle, Walk walk)
+    public static IReadOnlyList<MovementFrame> Run(Mover mover, MovementObject? obstacle, Walk walk) =>
+        Run(mover, obstacle is null ? [] : [obstacle], walk);
+
+    /// <summary>
+    /// The walk against several objects in one cell's shadow list, tested in list order with the first non-OK
+    /// winning (CObjCell::find_obj_collisions): how the chart runs a model whose shapes are not one retail family.
+    /// </summary>
+    public static IReadOnlyList<MovementFrame> Run(Mover mover, IReadOnlyList<MovementObject> obstacles, Walk walk)
     {
         ArgumentNullException.ThrowIfNull(mover);
+        ArgumentNullException.ThrowIfNull(obstacles);
         ArgumentNullException.ThrowIfNull(walk);
         var floor = new FlatFloor(walk.FloorZ);
-        var collider = obstacle is null ? null : new ObjectCollider(obstacle);
+        var collider = obstacles.Select(o => new ObjectCollider(o)).ToArray();
         var state = new CarriedState(walk.Start, walk.StartContact ?? floor.Plane);
         var frames = new List<MovementFrame>(walk.Frames);
         for (var f = 0; f < walk.Frames; f++)
@@ -37,7 +45,7 @@ internal static class MovementReference
         private float _verticalVelocity;
 
         // CPhysicsObj::UpdatePhysicsInternal → transition → SetPositionInternal
-        public MovementFrame Advance(int frame, Mover mover, Walk walk, FlatFloor floor, ObjectCollider? collider)
+        public MovementFrame Advance(int frame, Mover mover, Walk walk, FlatFloor floor, IReadOnlyList<ObjectCollider> collider)
         {
             var q = walk.Quantum;
             // calc_acceleration: no gravity while in contact with walkable ground
@@ -79,7 +87,7 @@ internal static class MovementReference
         }
 
         // CPhysicsObj::transition's set-up: get_object_info, init_sphere, the contact plane and sliding normal
-        private Transition Begin(Mover mover, Vector3 velocity, FlatFloor floor, ObjectCollider? collider)
+        private Transition Begin(Mover mover, Vector3 velocity, FlatFloor floor, IReadOnlyList<ObjectCollider> collider)
         {
             var transition = new Transition(floor, collider);
             var info = transition.Info;

@@ -3,11 +3,11 @@ using System.Numerics;
 namespace AcShadow.Fixtures.Movement;
 
 /// <summary>
-/// CTransition for one mover in one land cell holding a flat floor and at most one object: the movement is
-/// cut into steps, each step's offset adjusted to the contact plane and sliding normal, inserted (floor first,
-/// then the object), responded to (step up, step down, slide, edge slide, land) and validated.
+/// CTransition for one mover in one land cell holding a flat floor and its shadow objects (usually one): the
+/// movement is cut into steps, each step's offset adjusted to the contact plane and sliding normal, inserted
+/// (floor first, then the objects in order), responded to (step up, step down, slide, edge slide, land) and validated.
 /// </summary>
-internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
+internal sealed class Transition(FlatFloor floor, IReadOnlyList<ObjectCollider> obstacles)
 {
     public SpherePath Path { get; } = new();
     public CollisionInfo Collisions { get; } = new();
@@ -140,12 +140,14 @@ internal sealed class Transition(FlatFloor floor, ObjectCollider? obstacle)
         return state;
     }
 
-    // CLandCell::find_collisions: terrain first, then the shadow objects
+    // CLandCell::find_collisions: terrain first, then CObjCell::find_obj_collisions over the shadow objects
+    // in list order, the first non-OK winning (retail iterates forward; ACE reverses, movement.md §5.3 #1)
     private TransitionState FindCollisions()
     {
         var state = floor.ValidateWalkable(this);
-        if (state != TransitionState.OK || obstacle is null) return state;
-        return obstacle.FindObjCollisions(this);
+        for (var i = 0; i < obstacles.Count && state == TransitionState.OK; i++)
+            state = obstacles[i].FindObjCollisions(this);
+        return state;
     }
 
     // CTransition::transitional_insert

@@ -34,7 +34,7 @@ public sealed class LayeringTests
             "Scenes", "Cells", "Batch", "Verify"),
         ["AcShadow.Forging"] = Layers.Of("AcShadow.Forging", "Spec", "Geometry", "Bsp", ""),
         ["AcShadow.Analysis"] = Layers.Of("AcShadow.Analysis",
-            "Reports", "Fitting", "Chart.Models", "Chart", "Chart.Output", "Compile", "Chart.Cells", "Audit", "Doctor", "View"),
+            "Reports", "Fitting", "Chart.Models", "Chart.Movement", "Chart", "Chart.Output", "Compile", "Chart.Cells", "Audit", "Doctor", "View"),
         ["acshadow"] = Layers.Of("AcShadow.Cli", "Infrastructure", "Conventions", "Terminal", "Output", "Commands", ""),
     };
 

@@ -22,23 +22,18 @@ public class ShapeModelTests
     }
 
     [Fact]
-    public void Fallback_cylinder_takes_the_first_cylsphere_else_the_first_sphere_else_the_setup_size()
+    public void Fallback_cylinder_is_the_setup_radius_by_height_at_the_origin_whatever_cylspheres_or_spheres_the_setup_has()
     {
         var model = new FallbackCylinderModel();
-        var withCyl = Records.Setup(0x02000001, [], cyls: [new CylSphere(new(1, 0, 0), 0.3f, 1.5f), new CylSphere(new(5, 0, 0), 1f, 1f)],
-            spheres: [new Sphere(new(9, 0, 0), 2f)]);
+        var withCyl = Records.Setup(0x02000001, [], cyls: [new CylSphere(new(1, 0, 0), 0.3f, 1.5f)],
+            spheres: [new Sphere(new(9, 0, 0), 2f)], radius: 0.5f, height: 1f);
         var a = model.Prepare(Subject(withCyl));
-        Assert.True(a.Overlaps(new Vector3(1.7f, 0, 0.5f), 0.5f));
-        Assert.False(a.Overlaps(new Vector3(5, 0, 0.5f), 0.5f));
+        Assert.True(a.Overlaps(new Vector3(0.9f, 0, 0.5f), 0.5f));
+        Assert.False(a.Overlaps(new Vector3(1.7f, 0, 0.5f), 0.5f));
 
-        var withSphere = Records.Setup(0x02000002, [], spheres: [new Sphere(new(0, 0, 0.018f), 0.1f), new Sphere(new(5, 0, 0), 1f)]);
-        var b = model.Prepare(Subject(withSphere));
-        var s = Assert.Single(b.Shapes).Shape;
-        Assert.Equal((CollisionType.Cylinder, 0.1f, 0.2f, new Vector3(0, 0, 0.018f)), (s.CollisionType, s.Radius, s.CylHeight, s.LocalPosition));
-
-        var bare = Records.Setup(0x02000003, [], radius: 0.141f, height: 0.2f);
-        var c = Assert.Single(model.Prepare(Subject(bare)).Shapes);
-        Assert.Equal((0.141f, 0.2f, Vector3.Zero), (c.Shape.Radius, c.Shape.CylHeight, c.Shape.LocalPosition));
+        var door = Records.Setup(0x02000003, [], spheres: [new Sphere(new(0, 0, 0.018f), 0.1f)], radius: 0.141f, height: 0.2f);
+        var c = Assert.Single(model.Prepare(Subject(door)).Shapes);
+        Assert.Equal((CollisionType.Cylinder, 0.141f, 0.2f, Vector3.Zero), (c.Shape.CollisionType, c.Shape.Radius, c.Shape.CylHeight, c.Shape.LocalPosition));
         Assert.Equal("Setup Radius x Height", c.Name);
     }
 

@@ -77,10 +77,11 @@ public sealed class CompiledSceneViewTests
     }
 
     /// <summary>The sample landblock compiled with the default options (shared with the scene tests), written as `scene --out` writes it.</summary>
-    private static TempDir CompiledSample()
+    /// <summary>The sample landblock compiled on probes alone (its column a hull), or, <paramref name="walked"/>, as `acshadow scene` compiles it: walked as well (every object retail).</summary>
+    private static TempDir CompiledSample(bool walked = false)
     {
         var dir = new TempDir();
-        foreach (var file in CompiledSceneFiles.Render(SceneCompileTests.Exact.Value, id => SampleChart.Subjects.Value.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null))
+        foreach (var file in CompiledSceneFiles.Render((walked ? SceneMovementTests.Walked : SceneCompileTests.Exact).Value, id => SampleChart.Subjects.Value.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null))
         {
             var path = Path.Combine(dir.Path, file.RelativePath);
             Directory.CreateDirectory(Path.GetDirectoryName(path)!);
@@ -341,7 +342,7 @@ public sealed class CompiledSceneViewTests
     [Fact]
     public void The_committed_drawing_of_the_compiled_sample_is_what_view_writes()
     {
-        using var scene = CompiledSample();
+        using var scene = CompiledSample(walked: true);
         using var output = new TempDir();
         View(output, "--scene", scene.Path);
         var docs = Path.Combine(RepositoryRoot.Path, "docs", "view");

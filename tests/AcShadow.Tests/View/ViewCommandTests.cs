@@ -77,7 +77,7 @@ public sealed class ViewCommandTests
         string[] Shapes(string group) => root.VisualChildren.Single(g => g.Name == group).VisualChildren.Single().VisualChildren.Select(n => n.Name).ToArray();
         Assert.Equal(["retail: part 0 GfxObj 0x010044B5", "retail: part 1 GfxObj 0x010044B6", "retail: part 2 GfxObj 0x010044B6"], Shapes("retail"));
         Assert.Equal(["union: Sphere 0 as cylinder", "union: part 0 GfxObj 0x010044B5", "union: part 1 GfxObj 0x010044B6", "union: part 2 GfxObj 0x010044B6"], Shapes("union").Order(StringComparer.Ordinal));
-        Assert.Equal(["fallback-cylinder: Sphere 0 as cylinder"], Shapes("fallback-cylinder"));
+        Assert.Equal(["fallback-cylinder: Setup Radius x Height"], Shapes("fallback-cylinder"));
         Assert.Equal(["spheres: Sphere 0"], Shapes("spheres"));
         Assert.Equal(9, model.LogicalMeshes.Count);
 
@@ -95,11 +95,11 @@ public sealed class ViewCommandTests
             AssertClose(vertices.Aggregate(Vector3.Min), min);
             AssertClose(vertices.Aggregate(Vector3.Max), max);
         }
-        // The soda can: Sphere 0 (r 0.1 at z 0.018) as a cylinder 2r tall, standing on the sphere's centre; glTF's up is y.
+        // The soda can: the Setup's Radius × Height (0.141 × 0.2) standing at the origin; glTF's up is y.
         var can = root.VisualChildren.Single(g => g.Name == "fallback-cylinder").VisualChildren.Single().VisualChildren.Single();
         var (canMin, canMax) = WorldBounds(can);
-        AssertClose(new Vector3(-0.1f, 0.018f, -0.1f), canMin);
-        AssertClose(new Vector3(0.1f, 0.218f, 0.1f), canMax);
+        AssertClose(new Vector3(-0.141f, 0f, -0.141f), canMin);
+        AssertClose(new Vector3(0.141f, 0.2f, 0.141f), canMax);
         Assert.Equal(2 * UnitCircle.Steps + 2 * (UnitCircle.Steps - 2), Triangles(can));
 
         var validation = ModelRoot.Validate(path);

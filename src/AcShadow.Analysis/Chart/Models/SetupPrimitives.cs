@@ -46,24 +46,13 @@ public sealed record SetupPrimitives(IReadOnlyList<CylSphere> CylSpheres, IReadO
     }
 
     /// <summary>
-    /// The one cylinder the buggy client registered: the first CylSphere; else the first Sphere as a
-    /// cylinder of height 2r based at the sphere's centre (as the seed's builder places it); else the Setup's
-    /// Radius × Height standing at the entity origin, reported as the Setup's sphere −1.
+    /// The one cylinder the buggy client registered, acshadow's single definition of it (audit's coverage, chart,
+    /// view and the movement chart all use this): the Setup's Radius × Height, standing at the entity origin,
+    /// reported as the Setup's sphere −1. Retail has no such shape; it is the seed design's fallback, whatever
+    /// CylSpheres or Spheres the Setup has. On the sample door that is 0.141 m × 0.2 m, the "soda can".
     /// </summary>
-    public ShadowShape FallbackCylinder(float scale)
-    {
-        if (CylSpheres.Count > 0)
-        {
-            var c = CylSpheres[0];
-            return new ShadowShape(ShapeSource.CylSphere, 0, null, CollisionType.Cylinder, c.Origin * scale, Quaternion.Identity, scale, c.Radius * scale, c.Height * scale, null);
-        }
-        if (Spheres.Count > 0)
-        {
-            var s = Spheres[0];
-            return new ShadowShape(ShapeSource.Sphere, 0, null, CollisionType.Cylinder, s.Center * scale, Quaternion.Identity, scale, s.Radius * scale, 2f * s.Radius * scale, null);
-        }
-        return new ShadowShape(ShapeSource.Sphere, -1, null, CollisionType.Cylinder, Vector3.Zero, Quaternion.Identity, scale, Radius * scale, Height * scale, null);
-    }
+    public ShadowShape FallbackCylinder(float scale) =>
+        new(ShapeSource.Sphere, -1, null, CollisionType.Cylinder, Vector3.Zero, Quaternion.Identity, scale, Radius * scale, Height * scale, null);
 
     private static JsonElement Member(JsonElement e, string name) =>
         e.ValueKind == JsonValueKind.Object && e.TryGetProperty(name, out var v) ? v : throw new FormatException($"missing \"{name}\"");

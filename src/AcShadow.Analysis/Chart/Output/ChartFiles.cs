@@ -41,10 +41,13 @@ public sealed class ChartFiles
     }
 
     /// <summary>summary.csv and speed-accuracy.svg, from the totals of a run over <paramref name="objects"/> objects.</summary>
-    public static IReadOnlyList<OutputFile> Totals(ChartOptions options, IReadOnlyList<string> models, int objects, IReadOnlyList<ModelSummary> summaries) =>
+    /// <param name="movement">The movement chart's totals (`chart --movement`): movement-summary.csv, and speed-accuracy.svg gains movement accuracy.</param>
+    public static IReadOnlyList<OutputFile> Totals(ChartOptions options, IReadOnlyList<string> models, int objects, IReadOnlyList<ModelSummary> summaries,
+        IReadOnlyList<Movement.MovementSummary>? movement = null) =>
     [
         OutputFile.Text("summary.csv", SummaryCsv.Write(summaries)),
-        OutputFile.Text("speed-accuracy.svg", SpeedAccuracySvg.Write(options, models[0], objects, summaries)),
+        OutputFile.Text("speed-accuracy.svg", SpeedAccuracySvg.Write(options, models[0], objects, summaries, movement)),
+        .. movement is null ? Array.Empty<OutputFile>() : [MovementFiles.Summary(movement)],
     ];
 
     /// <summary>

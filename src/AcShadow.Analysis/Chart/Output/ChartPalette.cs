@@ -11,6 +11,17 @@ internal static class ChartPalette
     public const string AgreeClear = "#ececec";
     public const string FalsePass = "#d62728";
     public const string FalseBlock = "#1f77b4";
+    /// <summary>A movement verdict's colour: agreement grey, false pass red, false block blue, deflection orange, step mismatch purple, stand-off drift green.</summary>
+    public static string Verdict(Movement.MovementVerdict verdict) => verdict switch
+    {
+        Movement.MovementVerdict.Agree => "#b0b0b0",
+        Movement.MovementVerdict.FalsePass => FalsePass,
+        Movement.MovementVerdict.FalseBlock => FalseBlock,
+        Movement.MovementVerdict.Deflection => "#ff7f0e",
+        Movement.MovementVerdict.StepMismatch => "#9467bd",
+        _ => "#2ca02c",
+    };
+
     public const string Axis = "#333333";
     public const string GridLine = "#dddddd";
 }

@@ -5,7 +5,9 @@ namespace AcShadow.Analysis.Chart.Output;
 /// <summary>
 /// speed-accuracy.svg: x = median time per query (log scale, ns), y = agreement with the reference over
 /// all probes (%). One labelled dot per model; a horizontal bar from p10 to p90 of its timed batches and a
-/// vertical bar from its worst to its best object's agreement.
+/// vertical bar from its worst to its best object's agreement. With the movement chart (`chart --movement`), a
+/// diamond per model at the same time gives its movement accuracy: the share of non-fragile walks whose verdict
+/// is agreement (movement-summary.csv), joined to its dot by a dashed line.
 /// </summary>
 public static class SpeedAccuracySvg
 {
@@ -13,7 +15,8 @@ public static class SpeedAccuracySvg
     private const double Left = 90, Right = 400, Top = 78, Bottom = 74;
 
 
-    public static string Write(ChartOptions options, string reference, int objects, IReadOnlyList<ModelSummary> summaries)
+    public static string Write(ChartOptions options, string reference, int objects, IReadOnlyList<ModelSummary> summaries,
+        IReadOnlyList<Movement.MovementSummary>? movement = null)
     {
         var svg = new SvgDocument(Width, Height);
         double plotW = Width - Left - Right, plotH = Height - Top - Bottom;
@@ -22,7 +25,8 @@ public static class SpeedAccuracySvg
         var lo = times.Length == 0 ? 10 : Math.Pow(10, Math.Floor(Math.Log10(times.Min())));
         var hi = times.Length == 0 ? 1e4 : Math.Pow(10, Math.Ceiling(Math.Log10(times.Max())));
         if (hi <= lo) hi = lo * 10;
-        var worst = summaries.Select(s => Math.Min(s.AgreementPercent, s.MinObjectAgreement)).Where(double.IsFinite).DefaultIfEmpty(100).Min();
+        var worst = summaries.Select(s => Math.Min(s.AgreementPercent, s.MinObjectAgreement))
+            .Concat(movement?.Select(s => s.AgreementPercent) ?? []).Where(double.IsFinite).DefaultIfEmpty(100).Min();
         var yMin = Math.Min(90, Math.Max(0, Math.Floor(worst / 10) * 10));
         var yStep = (100 - yMin) <= 10 ? 2 : (100 - yMin) <= 30 ? 5 : 10;
 
@@ -56,7 +60,7 @@ public static class SpeedAccuracySvg
             svg.Text(Left - 10, y + 4, F(pct, 0) + "%", 12, "end");
         }
         svg.Text(Left + plotW / 2, Height - 24, "median time per query (log scale; ns = nanoseconds, µs = microseconds)", 13, "middle");
-        svg.Text(28, Top + plotH / 2, "agreement with the reference (% of probes)", 13, "middle", rotate: -90);
+        svg.Text(28, Top + plotH / 2, movement is null ? "agreement with the reference (% of probes)" : "agreement with the reference (● % of probes, ◆ % of walks)", 13, "middle", rotate: -90);
 
         for (var m = 0; m < summaries.Count; m++)
         {
@@ -77,6 +81,12 @@ public static class SpeedAccuracySvg
                 svg.Line(x - 5, Y(s.MaxObjectAgreement), x + 5, Y(s.MaxObjectAgreement), colour, 2);
             }
             svg.Circle(x, y, 6, colour, "#ffffff", 1.5, $"{s.Model}: {Time(s.Timing.MedianNs)} per query, {F(s.AgreementPercent, 2)}% agreement");
+            if (movement is not null && m < movement.Count)
+            {
+                var my = Y(movement[m].AgreementPercent);
+                svg.Line(x, y, x, my, colour, 1.2, "4 3");
+                svg.Polygon([(x, my - 7), (x + 7, my), (x, my + 7), (x - 7, my)], colour, 1, "#ffffff", 1.5);
+            }
         }
         var labels = new LabelPlacer(Left, Top, Left + plotW, Top + plotH);
         foreach (var s in summaries) labels.Avoid(X(s.Timing.MedianNs), Y(s.AgreementPercent), 7);
@@ -92,19 +102,23 @@ public static class SpeedAccuracySvg
         var lx = Left + plotW + 24;
         var ly = Top + 6;
         svg.Text(lx, ly, "Models", 14, "start", "bold");
+        var rowHeight = movement is null ? 40 : 54;
         for (var m = 0; m < summaries.Count; m++)
         {
             var s = summaries[m];
-            var row = ly + 24 + m * 40;
+            var row = ly + 24 + m * rowHeight;
             svg.Circle(lx + 7, row - 4, 6, ChartPalette.Model(m), "#ffffff", 1.5);
             svg.Text(lx + 20, row, s.Model + (m == 0 ? " (reference)" : ""), 13, "start", "bold", ChartPalette.Model(m));
             svg.Text(lx + 20, row + 16, $"{Time(s.Timing.MedianNs)}/query, {F(s.AgreementPercent, 2)}% agree, {I(s.FalsePass)} false pass, {I(s.FalseBlock)} false block", 10.5);
+            if (movement is not null && m < movement.Count)
+                svg.Text(lx + 20, row + 30, $"walks: {F(movement[m].AgreementPercent, 2)}% agree, {I(movement[m].Counts[(int)Movement.MovementVerdict.FalsePass] + movement[m].FragileFalsePass)} false pass, {Time(movement[m].NsPerTransition)}/transition", 10.5);
         }
-        var ny = ly + 24 + summaries.Count * 40 + 10;
+        var ny = ly + 24 + summaries.Count * rowHeight + 10;
         svg.Text(lx, ny, "dot: median time, agreement over all probes", 11);
         svg.Text(lx, ny + 16, "horizontal bar: p10–p90 time over timed batches", 11);
         svg.Text(lx, ny + 32, "vertical bar: worst–best object agreement", 11);
         svg.Text(lx, ny + 48, "false pass: reference blocks, model lets through", 11);
+        if (movement is not null) svg.Text(lx, ny + 64, "diamond: walks judged agreement (movement.md §4.2)", 11);
         return svg.Render();
     }
 }

@@ -54,6 +54,20 @@ internal sealed class SvgDocument
         _body.Append("/>\n");
     }
 
+    /// <summary>A path (SVG path data built by the caller from <see cref="Number"/>s): many strokes in one element keeps big maps small.</summary>
+    public void Path(string data, string fill, string? stroke = null, double strokeWidth = 1, double opacity = 1, string? dash = null)
+    {
+        if (data.Length == 0) return;
+        _body.Append($"<path d=\"{data}\" fill=\"{fill}\"");
+        if (stroke is not null) _body.Append($" stroke=\"{stroke}\" stroke-width=\"{N(strokeWidth)}\" stroke-linecap=\"round\" stroke-linejoin=\"round\"");
+        if (opacity < 1) _body.Append($" opacity=\"{N(opacity)}\"");
+        if (dash is not null) _body.Append($" stroke-dasharray=\"{dash}\"");
+        _body.Append("/>\n");
+    }
+
+    /// <summary>A coordinate as every element writes it (two decimals, invariant culture).</summary>
+    public static string Number(double v) => N(v);
+
     /// <summary>Text; anchor start | middle | end; rotate in degrees about the anchor point.</summary>
     public void Text(double x, double y, string text, double size = 12, string anchor = "start", string weight = "normal", string fill = "#222", double rotate = 0)
     {
