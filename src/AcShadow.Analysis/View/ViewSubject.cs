@@ -20,3 +20,6 @@ public sealed record ViewSubject(uint Id, string Kind, IReadOnlyList<ModelShapes
 
 /// <summary>A subject placed in a landblock: its scene index and its frame relative to the landblock's corner.</summary>
 public sealed record ViewPlacement(int Index, ViewSubject Subject, Frame Frame);
+
+/// <summary>An indoor cell of a landblock: its id, its landblock-relative frame and its physics polygons (the cell structure's dump).</summary>
+public sealed record ViewCell(uint Id, Frame Frame, BspDump Physics);
