@@ -93,6 +93,7 @@ public sealed class CompiledSceneViewTests
     {
         var run = CliRun.Of(["view", .. args, "--out", output.Path]);
         Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Error}");
+        GltfValidator.AssertValid(output.Path);
         return run.Out;
     }
 

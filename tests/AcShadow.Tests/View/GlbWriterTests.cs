@@ -41,7 +41,7 @@ public sealed class GlbWriterTests
         oneSided.AddPolygon([new(0, 0, 0), new(1, 0, 0), new(0, 2, 0)], Up);
         var twoSided = new TriangleMesh();
         twoSided.AddPolygon([new(0, 0, 0), new(0, 0, 3), new(1, 0, 3), new(1, 0, 0)], -Vector3.UnitY);
-        var shape = new ViewShape("part 0 GfxObj 0x01000001", oneSided, twoSided, new PointsOutline([]), Vector3.Zero);
+        var shape = new ViewShape("part 0 GfxObj 0x01000001", oneSided, twoSided, new PointsOutline([], FalsePass: true), Vector3.Zero);
         var turned = Quaternion.CreateFromAxisAngle(Up, MathF.PI / 2);
         ViewObject[] objects =
         [

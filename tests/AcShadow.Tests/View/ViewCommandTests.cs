@@ -28,6 +28,7 @@ public sealed class ViewCommandTests
     {
         var run = CliRun.Of(["view", .. args, "--out", dir.Path]);
         Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Error}");
+        GltfValidator.AssertValid(dir.Path);
         return run.Out;
     }
 
