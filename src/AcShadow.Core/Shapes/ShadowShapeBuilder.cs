@@ -114,7 +114,7 @@ public static class ShadowShapeBuilder
                     var s = setup.DefaultScale[i];
                     partScale *= s.Z;
                     if (s.X != s.Z || s.Y != s.Z)
-                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z"));
+                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z")));
                 }
                 shapes.Add(BspShape(i, gfx, partPose, scale, partScale));
             }
@@ -209,7 +209,7 @@ public static class ShadowShapeBuilder
             if (!Finite(setup.Spheres[i].Center) || !float.IsFinite(setup.Spheres[i].Radius))
                 yield return $"Sphere {i}: non-finite center or radius (NaN or infinity in the dat)";
         if (!float.IsFinite(setup.Radius) || !float.IsFinite(setup.Height))
-            yield return $"Setup Radius x Height: non-finite ({setup.Radius} x {setup.Height}; NaN or infinity in the dat)";
+            yield return string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Setup Radius x Height: non-finite ({setup.Radius} x {setup.Height}; NaN or infinity in the dat)");
     }
 
     private static bool IsFinite(ShadowShape s) =>
