@@ -109,7 +109,7 @@ public static class ViewSceneBuilder
                     // A shape the reference has too is drawn once, in the reference's layer.
                     var own = model == reference ? shapes.Shapes
                         : shapes.Shapes.Where(s => !(p.Subject.Models.FirstOrDefault(m => m.Model == reference)?.Shapes.Contains(s) ?? false)).ToArray();
-                    var made = new List<ViewShape>();
+                    var made = new List<ViewShape>(shapes.Drawn ?? []);
                     foreach (var s in own)
                     {
                         if (!IsFinite(s))
@@ -147,7 +147,7 @@ public static class ViewSceneBuilder
         groups.AddRange(FailureGroups(placements.Select(p => (p.Subject.Id, ObjectName(p, single), p.Frame)).ToArray(), failures));
         var drawnModels = groups.Select(g => g.Name).ToHashSet();
         foreach (var missing in failures.Select(f => f.Model).Distinct().Where(m => !drawnModels.Contains(m)).Order(StringComparer.Ordinal))
-            allNotes.Add($"{missing}'s shapes are not drawn here (a view from a dat or fixtures draws retail, union, fallback-cylinder and spheres): its markers stand alone; `acshadow scene` then `view --scene` draws the fitted models.");
+            allNotes.Add($"{missing}'s shapes are not drawn here (a view from fixtures has no dat to fit them from): its markers stand alone; `view` from the dat draws them.");
         return new ViewScene(name, title, worldOrigin, groups, allNotes) { Warnings = warnings };
     }
 

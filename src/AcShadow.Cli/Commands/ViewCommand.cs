@@ -94,11 +94,13 @@ public static partial class ViewCommand
     {
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var scenes = new List<ViewScene>();
+        // The fitted models the chart's markers name are drawn too, so each marker stands with its model's shapes.
+        var fitted = failures.Select(f => f.Model).ToHashSet(StringComparer.Ordinal);
         foreach (var id in ids)
         {
             var setup = dat.Portal.ReadSetup(id)
                 ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(id)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
-            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, pose, dat.Portal);
+            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, pose, dat.Portal, fitted);
             scenes.Add(ViewSceneBuilder.ForSetup(subject, failures));
         }
         if (landblock is { } lb)
@@ -117,7 +119,7 @@ public static partial class ViewCommand
                 {
                     made = o.Kind switch
                     {
-                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, pose, dat.Portal) : null,
+                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, pose, dat.Portal, fitted) : null,
                         SceneObjectKind.GfxObj => dat.Portal.ReadGfxObj(o.Id) is { } g ? ViewSubjects.FromBareGfxObj(g, dat.Portal.ReadGfxObj, pose.EntityScale) : null,
                         _ => null,
                     };

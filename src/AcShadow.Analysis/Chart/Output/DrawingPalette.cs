@@ -28,12 +28,12 @@ public static class DrawingPalette
     /// <summary>The whole compiled scene (the scene chart's bar), a colour no single model has.</summary>
     public const string Compiled = "#6A3D9A";
 
-    public const string AgreeBlocked = "#5A5A5A";
-    public const string AgreeClear = "#ECECEC";
-    public const string FalsePass = "#D62728";
-    public const string FalseBlock = "#1F77B4";
+    public const string AgreeBlocked = "#5a5a5a";
+    public const string AgreeClear = "#ececec";
+    public const string FalsePass = "#d62728";
+    public const string FalseBlock = "#1f77b4";
     public const string Axis = "#333333";
-    public const string GridLine = "#DDDDDD";
+    public const string GridLine = "#dddddd";
     public const string Ink = "#222222";
     public const string Note = "#555555";
     public const string Warning = "#B00020";
