@@ -43,6 +43,32 @@ public sealed class ViewNonFiniteTests
         Assert.Equal(0, CliRun.Of("view", "--fixtures", folder, "--setup", "0x020019FF", "--out", output).ExitCode);
     }
 
+    [Fact]
+    public void A_landblock_object_at_a_null_position_is_left_out_with_a_warning_and_the_rest_is_drawn()
+    {
+        using var dir = new TempDir();
+        var folder = Path.Combine(dir.Path, "fixtures");
+        var source = CommittedFixturesTests.RepositoryFixtures();
+        foreach (var file in Directory.GetFiles(source, "*", SearchOption.AllDirectories))
+        {
+            var target = Path.Combine(folder, Path.GetRelativePath(source, file));
+            Directory.CreateDirectory(Path.GetDirectoryName(target)!);
+            File.Copy(file, target);
+        }
+        var scene = Path.Combine(folder, "scene.json");
+        var json = File.ReadAllText(scene);
+        Assert.Contains("\"origin\": [136, 108, 12]", json);
+        File.WriteAllText(scene, json.Replace("\"origin\": [136, 108, 12]", "\"origin\": [null, 108, 12]"));
+        var output = Path.Combine(dir.Path, "out");
+        var run = CliRun.Of("view", "--fixtures", folder, "--landblock", "0xA9B4", "--out", output);
+        Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Error}");
+        Assert.Contains(run.ErrorLines, l => l.StartsWith("warning: #0 Setup 0x020019FF: non-finite: ", StringComparison.Ordinal));
+        var svg = File.ReadAllText(Path.Combine(output, "0xA9B4.svg"));
+        Assert.Contains("warning: #0 Setup 0x020019FF: non-finite: its placement frame is not finite: not drawn", svg);
+        Assert.Contains("#3 GfxObj 0x01005000", svg);
+        GltfValidator.AssertValid(output);
+    }
+
     [ValidatorFact]
     public void The_committed_glbs_pass_the_Khronos_glTF_validator_with_no_error_or_warning()
     {
