@@ -357,10 +357,11 @@ public static class SampleSpecAuthor
             new LandblockSpec
             {
                 Id = Hex(Landblock),
-                Comment = "one landblock: the door, a bare GfxObj, the multi-part static (Stabs) and the house (a BuildingInfo), all turned about Z",
+                Comment = "one landblock: the door standing in the house's opening, a bare GfxObj, the multi-part static (Stabs) and the house (a BuildingInfo), all turned about Z",
                 Objects =
                 [
-                    new StabSpec { Id = Hex(DoorSetup), Origin = [132, 103.9, 12], Orientation = Z(90) },
+                    // In the house's front-wall opening: the house (turned 90 deg) puts its local (0, -4) at (136, 108).
+                    new StabSpec { Id = Hex(DoorSetup), Origin = [136, 108, 12], Orientation = Z(90) },
                     new StabSpec { Id = Hex(Column), Origin = [30, 150, 10], Orientation = Z(120) },
                     new StabSpec { Id = Hex(StaticSetup), Origin = [100, 30, 11], Orientation = Z(-45) },
                 ],

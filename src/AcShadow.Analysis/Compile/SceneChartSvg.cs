@@ -27,12 +27,12 @@ internal static class SceneChartSvg
         var top = Math.Max(Max(t.Retail.P90Ns), Max(t.Compiled.P90Ns));
         double X(double ns, double scale) => Left + (double.IsFinite(ns) ? Math.Clamp(ns / scale, 0, 1) : 0) * BarWidth;
         svg.Text(20, 88, "Time to ask the whole scene about one mover position (median, p10–p90)", 14, "start", "bold");
-        Bar(svg, 108, "every object as retail", t.Retail, ChartPalette.AgreeBlocked, top, X, $"{Time(t.Retail.MedianNs)}, {I(t.RetailShapes)} shapes");
-        Bar(svg, 140, "compiled", t.Compiled, ChartPalette.Model(1), top, X,
+        Bar(svg, 108, "every object as retail", t.Retail, DrawingPalette.AgreeBlocked, top, X, $"{Time(t.Retail.MedianNs)}, {I(t.RetailShapes)} shapes");
+        Bar(svg, 140, "compiled", t.Compiled, DrawingPalette.Compiled, top, X,
             $"{Time(t.Compiled.MedianNs)}, {I(t.CompiledShapes)} shapes{Saving(t.Retail.MedianNs, t.Compiled.MedianNs)}");
         var verdict = t.FalsePass == 0 && t.FalseBlock == 0 ? "agrees with every-object-retail on every position" : $"{I(t.FalsePass)} false pass, {I(t.FalseBlock)} false block";
         svg.Text(20, 190, $"Accuracy: compiled {verdict} ({I(t.Agree)} of {I(t.Positions)}, {F(t.AgreementPercent, 3)} %)", 13.5, "start", "bold",
-            t.FalsePass > 0 ? ChartPalette.FalsePass : ChartPalette.Axis);
+            t.FalsePass > 0 ? DrawingPalette.FalsePass : DrawingPalette.Axis);
 
         svg.Text(20, 226, "Per object: chosen model, time per query (coloured) against retail (grey), disagreements over its probes", 14, "start", "bold");
         var perObject = objects.Select(report.For).Where(c => c is not null).SelectMany(c => new[] { c!.ChosenTiming.P90Ns, c.RetailTiming.P90Ns }).Where(double.IsFinite).DefaultIfEmpty(1).Max();
@@ -43,7 +43,7 @@ internal static class SceneChartSvg
             var y = 250 + k * Row;
             svg.Text(20, y + 12, $"#{I(placed.Index)} {JsonIds.Format(placed.Id)} → {c?.Model ?? ObjectCompilation.UnresolvedLabel}", 12, "start", "normal", ModelColour(c?.Model));
             if (c is null || c.Probes.Length == 0) continue;
-            svg.Rect(Left, y + 2, X(c.RetailTiming.MedianNs, perObject) - Left, 8, ChartPalette.AgreeBlocked, title: $"retail {Time(c.RetailTiming.MedianNs)}");
+            svg.Rect(Left, y + 2, X(c.RetailTiming.MedianNs, perObject) - Left, 8, DrawingPalette.AgreeBlocked, title: $"retail {Time(c.RetailTiming.MedianNs)}");
             svg.Rect(Left, y + 11, X(c.ChosenTiming.MedianNs, perObject) - Left, 8, ModelColour(c.Model), title: $"{c.Model} {Time(c.ChosenTiming.MedianNs)}");
             svg.Text(Left + BarWidth + 10, y + 12, $"{Time(c.ChosenTiming.MedianNs)} vs {Time(c.RetailTiming.MedianNs)}; {I(c.Probes.Length)} probes, {I(c.FalsePass)} false pass, {I(c.FalseBlock)} false block", 10.5);
         }
@@ -64,7 +64,7 @@ internal static class SceneChartSvg
         svg.Text(Left - 10, y + 14, label, 13, "end");
         svg.Rect(Left, y, x(timing.MedianNs, top) - Left, 20, colour, title: $"{label}: {Time(timing.MedianNs)} per mover position");
         if (double.IsFinite(timing.P10Ns) && double.IsFinite(timing.P90Ns))
-            svg.Line(x(timing.P10Ns, top), y + 10, x(timing.P90Ns, top), y + 10, ChartPalette.Axis, 1.5);
+            svg.Line(x(timing.P10Ns, top), y + 10, x(timing.P90Ns, top), y + 10, DrawingPalette.Axis, 1.5);
         svg.Text(Math.Max(x(timing.P90Ns, top), x(timing.MedianNs, top)) + 8, y + 14, value, 12);
     }
 
@@ -73,9 +73,5 @@ internal static class SceneChartSvg
 
     private static double Max(double v) => double.IsFinite(v) && v > 0 ? v : 1;
 
-    private static string ModelColour(string? model)
-    {
-        var index = model is null ? -1 : ModelLadder.Names.ToList().IndexOf(model);
-        return index < 0 ? ChartPalette.Axis : ChartPalette.Model(index + 1);
-    }
+    private static string ModelColour(string? model) => model is null ? DrawingPalette.Unknown : DrawingPalette.Model(model);
 }

@@ -13,10 +13,10 @@ namespace AcShadow.Analysis.View;
 
 /// <summary>
 /// One thing a compiled scene places, drawn by the model chosen for it: a placed object ("#3 Setup
-/// 0x020019FF") or an indoor cell ("cell 0xA9B40100", always <see cref="ViewModels.Cells"/>), its id, its
-/// landblock-relative frame and its shapes in that frame.
+/// 0x020019FF", its scene index 3) or an indoor cell ("cell 0xA9B40100", index −1, always
+/// <see cref="ViewModels.Cells"/>), its id, its landblock-relative frame and its shapes in that frame.
 /// </summary>
-public sealed record CompiledPlacement(string Name, uint Id, string Model, Frame Frame, IReadOnlyList<ViewShape> Shapes);
+public sealed record CompiledPlacement(int Index, string Name, uint Id, string Model, Frame Frame, IReadOnlyList<ViewShape> Shapes);
 
 /// <summary>
 /// compiled-scene.json (what <c>acshadow scene</c> writes) read for drawing: each object's chosen model and
@@ -31,6 +31,9 @@ public sealed record CompiledPlacement(string Name, uint Id, string Model, Frame
 public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin, IReadOnlyList<float> MoverRadii, double TolerancePercent,
     IReadOnlyList<CompiledPlacement> Objects, IReadOnlyList<CompiledPlacement> Cells, int Undrawn)
 {
+    /// <summary>What the compile reported for each object ("0x02003000: non-uniform-scale: …"), in file order.</summary>
+    public IReadOnlyList<string> Warnings { get; init; } = [];
+
     /// <summary>
     /// Reads the file once (the fixtures package's reader) and draws it; refused unless the package also loads
     /// it as a <see cref="CompiledScene"/>, so nothing is drawn that a consumer could not query.
@@ -62,7 +65,7 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
                 throw new FormatException($"object #{o.Index}: model \"{modelName}\" is none of the ladder's ({string.Join(", ", ModelLadder.Names)})");
             RequireFinite(name, o.Position, o.Rotation);
             var shapes = o.Shapes.Select(s => Shape(s, bspFile)).OfType<ViewShape>().ToArray();
-            objects.Add(new CompiledPlacement(name, o.Id, modelName, Frame(o.Position, o.Rotation), shapes));
+            objects.Add(new CompiledPlacement(o.Index, name, o.Id, modelName, Frame(o.Position, o.Rotation), shapes));
         }
 
         var cells = new List<CompiledPlacement>();
@@ -71,11 +74,31 @@ public sealed record CompiledSceneDrawing(uint LandblockId, Vector3 WorldOrigin,
             if (c.File is null) continue;
             RequireFinite($"cell {JsonIds.Format(c.CellId)}", c.Position, c.Rotation);
             var dump = Dump(bspFile, c.File, CompiledSceneWriter.CellBspPath(c.CellId), c.CellId, $"cell {JsonIds.Format(c.CellId)}");
-            cells.Add(new CompiledPlacement($"cell {JsonIds.Format(c.CellId)}", c.CellId, ViewModels.Cells, Frame(c.Position, c.Rotation),
-                [ShapeTessellation.Polygons($"cell {JsonIds.Format(c.CellId)} physics polygons", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), dump)]));
+            cells.Add(new CompiledPlacement(-1, $"cell {JsonIds.Format(c.CellId)}", c.CellId, ViewModels.Cells, Frame(c.Position, c.Rotation),
+                [ShapeTessellation.Polygons("physics polygons", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), dump)]));
         }
         CompiledScene.From(file, bspFile);
-        return new CompiledSceneDrawing(file.LandblockId, worldOrigin, file.MoverRadii, file.TolerancePercent, objects, cells, undrawn);
+        return new CompiledSceneDrawing(file.LandblockId, worldOrigin, file.MoverRadii, file.TolerancePercent, objects, cells, undrawn) { Warnings = Diagnostics(json) };
+    }
+
+    /// <summary>Each object's and cell's "diagnostics" as warning lines; a file without them has none.</summary>
+    private static string[] Diagnostics(string json)
+    {
+        using var doc = System.Text.Json.JsonDocument.Parse(json);
+        var lines = new List<string>();
+        foreach (var (array, idName) in new[] { ("objects", "id"), ("cells", "cellId") })
+        {
+            if (!doc.RootElement.TryGetProperty(array, out var items) || items.ValueKind != System.Text.Json.JsonValueKind.Array) continue;
+            foreach (var item in items.EnumerateArray())
+            {
+                if (!item.TryGetProperty("diagnostics", out var list) || list.ValueKind != System.Text.Json.JsonValueKind.Array) continue;
+                var id = item.TryGetProperty(idName, out var v) && v.ValueKind == System.Text.Json.JsonValueKind.String ? v.GetString() : "?";
+                foreach (var d in list.EnumerateArray())
+                    if (d.ValueKind == System.Text.Json.JsonValueKind.Object && d.TryGetProperty("code", out var code) && d.TryGetProperty("message", out var message))
+                        lines.Add($"{id}: {code}: {message}");
+            }
+        }
+        return [.. lines];
     }
 
     private static ViewShape? Shape(CompiledSceneFile.Shape shape, Func<string, BspDump> bspFile)

@@ -1,6 +1,7 @@
 using System.Buffers;
 using System.Globalization;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Text.Json;
 
 namespace AcShadow.Analysis.View;
@@ -8,16 +9,23 @@ namespace AcShadow.Analysis.View;
 /// <summary>
 /// A <see cref="ViewScene"/> as one binary glTF 2.0 file, written here (JSON by <see cref="Utf8JsonWriter"/>,
 /// the chunks by <see cref="GlbContainer"/>) so the Native AOT binary carries no glTF library. Nodes, in
-/// depth-first order: the scene's root (carrying a landblock's world origin), one node per group, one per
-/// object in it (its frame), one per shape with its mesh. Units are metres. The dat is Z-up (x east, y north,
+/// depth-first order: the scene's root (named by the view's title, so no viewer renames it for clashing with
+/// the scene's name; at the origin, with the world origin of a landblock's corner and the warnings in its
+/// <c>extras</c>, so a viewer opens on the geometry, not 47 km away), one node per group, one per object in
+/// it (its frame), one per shape with its mesh. A mesh belongs to one layer: no two layers share one. Units are metres. The dat is Z-up (x east, y north,
 /// z up); glTF is Y-up with +Z toward the viewer, so every position, normal and rotation axis is converted
 /// explicitly as (x, y, z)_dat → (x, z, −y)_glTF, a proper rotation (−90° about x): winding and handedness
 /// are kept. Materials: one per group and sidedness (glTF sets double-sidedness per material), in order of
-/// first use. No timestamps, no <c>extras</c>; the same scene gives the same bytes.
+/// first use; the reference layer's (and markers') are opaque, every other layer's translucent (alpha
+/// blend, <see cref="OverlayAlpha"/>), so the reference shows through what is drawn over it. No
+/// timestamps; the same scene gives the same bytes.
 /// </summary>
 public static class GlbWriter
 {
     public const string Generator = "acshadow view";
+
+    /// <summary>The opacity of a layer drawn over the reference.</summary>
+    public const float OverlayAlpha = 0.3f;
 
     public static Vector3 ToGltf(Vector3 dat) => new(dat.X, dat.Z, -dat.Y);
 
@@ -26,13 +34,16 @@ public static class GlbWriter
     private sealed record Node(string Name, Vector3 Translation, Quaternion Rotation, int? Mesh)
     {
         public List<int> Children { get; } = [];
+
+        /// <summary>Writes the node's extras object, when it has one.</summary>
+        public Action<Utf8JsonWriter>? Extras { get; init; }
     }
 
     private sealed record Primitive(int Position, int Normal, int Indices, int Material);
 
     private sealed record Mesh(string Name, IReadOnlyList<Primitive> Primitives);
 
-    private sealed record Material(string Name, Vector4 BaseColour, bool DoubleSided);
+    private sealed record Material(string Name, Vector4 BaseColour, bool DoubleSided, bool Blend);
 
     public static byte[] Write(ViewScene view)
     {
@@ -40,7 +51,7 @@ public static class GlbWriter
         var meshes = new List<Mesh>();
         var materials = new List<Material>();
         var data = new GltfBinaryData();
-        var meshOf = new Dictionary<ViewShape, int?>(ReferenceEqualityComparer.Instance);
+        var meshOf = new Dictionary<(ViewGroup, ViewShape), int?>(new LayerShapeComparer());
 
         int AddNode(Node node, int? parent)
         {
@@ -49,19 +60,21 @@ public static class GlbWriter
             return nodes.Count - 1;
         }
 
-        var root = AddNode(new Node(view.Name, ToGltf(view.WorldOrigin), Quaternion.Identity, null), null);
+        var root = AddNode(new Node(view.Title, Vector3.Zero, Quaternion.Identity, null) { Extras = json => WriteRootExtras(json, view) }, null);
         foreach (var group in view.Groups)
         {
-            var groupNode = AddNode(new Node(group.Name, Vector3.Zero, Quaternion.Identity, null), root);
+            var groupNode = AddNode(new Node(group.Title, Vector3.Zero, Quaternion.Identity, null), root);
             var groupMaterials = new GroupMaterials(group, materials);
             foreach (var o in group.Objects)
             {
                 var objectNode = AddNode(new Node($"{group.Name}: {o.Name}", ToGltf(o.Frame.Position), ToGltf(o.Frame.Rotation), null), groupNode);
-                var prefix = group.Objects.Count == 1 ? "" : o.Name.Split(' ')[0] + " ";
+                // A landblock's shapes name their object ("#3 Setup …", "cell 0x…"), however many the layer holds.
+                var prefix = o.Key is null ? "" : o.Name + ": ";
                 foreach (var shape in o.Shapes)
                 {
                     var name = $"{group.Name}: {prefix}{shape.Name}";
-                    if (!meshOf.TryGetValue(shape, out var mesh)) meshOf[shape] = mesh = AddMesh(meshes, data, name, shape, groupMaterials);
+                    // A shape shared by objects placed twice shares its mesh within the layer, never across layers.
+                    if (!meshOf.TryGetValue((group, shape), out var mesh)) meshOf[(group, shape)] = mesh = AddMesh(meshes, data, name, shape, groupMaterials);
                     AddNode(new Node(name, Vector3.Zero, Quaternion.Identity, mesh), objectNode);
                 }
             }
@@ -123,6 +136,12 @@ public static class GlbWriter
                 foreach (var child in node.Children) json.WriteNumberValue(child);
                 json.WriteEndArray();
             }
+            if (node.Extras is { } extras)
+            {
+                json.WriteStartObject("extras");
+                extras(json);
+                json.WriteEndObject();
+            }
             json.WriteEndObject();
         }
         json.WriteEndArray();
@@ -173,6 +192,7 @@ public static class GlbWriter
             GltfJson.WriteFloat(json, "metallicFactor", 0f);
             GltfJson.WriteFloat(json, "roughnessFactor", 0.9f);
             json.WriteEndObject();
+            if (material.Blend) json.WriteString("alphaMode", "BLEND");
             if (material.DoubleSided) json.WriteBoolean("doubleSided", true);
             json.WriteEndObject();
         }
@@ -185,8 +205,10 @@ public static class GlbWriter
         private int? _oneSided;
         private int? _twoSided;
 
-        public int OneSided => _oneSided ??= Add(new Material(group.Name, Rgba(group.Colour), DoubleSided: false));
-        public int TwoSided => _twoSided ??= Add(new Material(group.Name + " (two-sided)", Rgba(group.Colour), DoubleSided: true));
+        private bool Blend => !group.Filled && group.FalsePass is null;
+
+        public int OneSided => _oneSided ??= Add(new Material(group.Name, Rgba(group.Colour, Blend), DoubleSided: false, Blend));
+        public int TwoSided => _twoSided ??= Add(new Material(group.Name + " (two-sided)", Rgba(group.Colour, Blend), DoubleSided: true, Blend));
 
         private int Add(Material material)
         {
@@ -195,7 +217,7 @@ public static class GlbWriter
         }
 
         /// <summary>"#rrggbb" as linear RGBA, as glTF's baseColorFactor is linear.</summary>
-        private static Vector4 Rgba(string hex)
+        private static Vector4 Rgba(string hex, bool blend)
         {
             float Channel(int at)
             {
@@ -203,7 +225,28 @@ public static class GlbWriter
                 // Rounded so a last-bit difference in the C runtime's pow cannot change the file.
                 return (float)Math.Round(srgb <= 0.04045f ? srgb / 12.92 : Math.Pow((srgb + 0.055) / 1.055, 2.4), 4);
             }
-            return new Vector4(Channel(1), Channel(3), Channel(5), 1f);
+            return new Vector4(Channel(1), Channel(3), Channel(5), blend ? OverlayAlpha : 1f);
         }
+    }
+
+    /// <summary>The root's extras: the landblock corner's world position (dat axes, metres) the geometry is relative to, and the warnings.</summary>
+    private static void WriteRootExtras(Utf8JsonWriter json, ViewScene view)
+    {
+        json.WriteString("axes", "dat (x east, y north, z up) turned to glTF as (x, z, -y)");
+        json.WriteStartArray("worldOrigin");
+        foreach (var v in new[] { view.WorldOrigin.X, view.WorldOrigin.Y, view.WorldOrigin.Z })
+            GltfJson.WriteFloat(json, float.IsFinite(v) ? v : 0f);
+        json.WriteEndArray();
+        json.WriteStartArray("warnings");
+        foreach (var w in view.Warnings) json.WriteStringValue(w);
+        json.WriteEndArray();
+    }
+
+    /// <summary>A layer and a shape, both by reference.</summary>
+    private sealed class LayerShapeComparer : IEqualityComparer<(ViewGroup, ViewShape)>
+    {
+        public bool Equals((ViewGroup, ViewShape) a, (ViewGroup, ViewShape) b) => ReferenceEquals(a.Item1, b.Item1) && ReferenceEquals(a.Item2, b.Item2);
+
+        public int GetHashCode((ViewGroup, ViewShape) key) => HashCode.Combine(RuntimeHelpers.GetHashCode(key.Item1), RuntimeHelpers.GetHashCode(key.Item2));
     }
 }

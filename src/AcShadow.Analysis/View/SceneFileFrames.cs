@@ -21,9 +21,12 @@ public static class SceneFileFrames
             var origin = frame.GetProperty("origin");
             var q = frame.GetProperty("orientation");
             frames[o.GetProperty("index").GetInt32()] = new Frame(
-                new Vector3(origin[0].GetSingle(), origin[1].GetSingle(), origin[2].GetSingle()),
-                new Quaternion(q.GetProperty("x").GetSingle(), q.GetProperty("y").GetSingle(), q.GetProperty("z").GetSingle(), q.GetProperty("w").GetSingle()));
+                new Vector3(Number(origin[0]), Number(origin[1]), Number(origin[2])),
+                new Quaternion(Number(q.GetProperty("x")), Number(q.GetProperty("y")), Number(q.GetProperty("z")), Number(q.GetProperty("w"))));
         }
         return frames;
     }
+
+    /// <summary>A number; <c>null</c> is how acshadow writes a non-finite one (JSON has no NaN), read back as NaN for the view to leave out with a warning.</summary>
+    private static float Number(JsonElement e) => e.ValueKind == JsonValueKind.Null ? float.NaN : e.GetSingle();
 }

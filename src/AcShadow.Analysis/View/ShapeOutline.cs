@@ -13,5 +13,5 @@ public sealed record CylinderOutline(Vector3 Base, float Radius, float Height) :
 
 public sealed record SphereOutline(Vector3 Center, float Radius) : ShapeOutline;
 
-/// <summary>Marked points (chart probes), drawn as dots.</summary>
-public sealed record PointsOutline(IReadOnlyList<Vector3> Points) : ShapeOutline;
+/// <summary>Marked points (chart probes): diamonds for false passes, squares for false blocks.</summary>
+public sealed record PointsOutline(IReadOnlyList<Vector3> Points, bool FalsePass) : ShapeOutline;

@@ -20,11 +20,14 @@ internal static class ShapeTessellation
 {
     private const int SphereBands = UnitCircle.Steps / 2;
 
-    /// <summary>The shape's name in a view: "part 0 GfxObj 0x010044B5", "CylSphere 1", "Sphere 0", "Setup Radius x Height".</summary>
+    /// <summary>
+    /// The shape's name in a view, as compiled-scene.json and the chart name it: "part 0 (GfxObj 0x010044B5)",
+    /// "CylSphere 1", "Sphere 0", "Setup Radius x Height".
+    /// </summary>
     public static string NameOf(ShadowShape shape) => shape switch
     {
         { SourceIndex: < 0 } => "Setup Radius x Height",
-        { Source: ShapeSource.Part } => $"part {shape.SourceIndex} GfxObj 0x{shape.GfxObjId ?? 0:X8}",
+        { Source: ShapeSource.Part } => $"part {shape.SourceIndex} (GfxObj 0x{shape.GfxObjId ?? 0:X8})",
         { Source: ShapeSource.CylSphere } => $"CylSphere {shape.SourceIndex}",
         _ => $"Sphere {shape.SourceIndex}",
     } + (shape.CollisionType == CollisionType.Cylinder && shape.Source == ShapeSource.Sphere && shape.SourceIndex >= 0 ? " as cylinder" : "");
@@ -120,12 +123,43 @@ internal static class ShapeTessellation
     public static ViewShape Sphere(string name, Vector3 centre, float radius) =>
         new(name, SphereMesh(centre, radius, SphereBands, 1), new TriangleMesh(), new SphereOutline(centre, radius), centre);
 
-    /// <summary>Small spheres (4 bands, 8 segments) at each point: chart probes a viewer can pick out.</summary>
-    public static ViewShape Markers(string name, IReadOnlyList<Vector3> points, float radius)
+    /// <summary>
+    /// A marker at each point, <paramref name="size"/> from its centre to a corner: an octahedron (a diamond
+    /// from every side) for a false pass, a cube for a false block, so the two verdicts differ in shape as
+    /// well as in layer.
+    /// </summary>
+    public static ViewShape Markers(string name, IReadOnlyList<Vector3> points, float size, bool falsePass)
     {
         var mesh = new TriangleMesh();
-        foreach (var p in points) AddSphere(mesh, p, radius, 4, UnitCircle.Steps / 8);
-        return new ViewShape(name, mesh, new TriangleMesh(), new PointsOutline(points), points.Count > 0 ? points[0] : Vector3.Zero);
+        foreach (var p in points)
+            if (falsePass) AddOctahedron(mesh, p, size);
+            else AddCube(mesh, p, size / MathF.Sqrt(3));
+        return new ViewShape(name, mesh, new TriangleMesh(), new PointsOutline(points, falsePass), points.Count > 0 ? points[0] : Vector3.Zero);
+    }
+
+    private static void AddOctahedron(TriangleMesh mesh, Vector3 c, float r)
+    {
+        Vector3 x = new(r, 0, 0), y = new(0, r, 0), z = new(0, 0, r);
+        foreach (var sx in new[] { 1f, -1f })
+            foreach (var sy in new[] { 1f, -1f })
+                foreach (var sz in new[] { 1f, -1f })
+                {
+                    Vector3 a = c + sx * x, b = c + sy * y, t = c + sz * z;
+                    // Counter-clockwise seen from outside: the sign of the octant decides the order.
+                    if (sx * sy * sz > 0) mesh.AddFace(a, b, t);
+                    else mesh.AddFace(a, t, b);
+                }
+    }
+
+    private static void AddCube(TriangleMesh mesh, Vector3 c, float h)
+    {
+        Vector3 P(float x, float y, float z) => c + new Vector3(x * h, y * h, z * h);
+        mesh.AddFace(P(-1, -1, -1), P(-1, 1, -1), P(1, 1, -1), P(1, -1, -1));
+        mesh.AddFace(P(-1, -1, 1), P(1, -1, 1), P(1, 1, 1), P(-1, 1, 1));
+        mesh.AddFace(P(-1, -1, -1), P(1, -1, -1), P(1, -1, 1), P(-1, -1, 1));
+        mesh.AddFace(P(-1, 1, -1), P(-1, 1, 1), P(1, 1, 1), P(1, 1, -1));
+        mesh.AddFace(P(-1, -1, -1), P(-1, -1, 1), P(-1, 1, 1), P(-1, 1, -1));
+        mesh.AddFace(P(1, -1, -1), P(1, 1, -1), P(1, 1, 1), P(1, -1, 1));
     }
 
     private static TriangleMesh SphereMesh(Vector3 centre, float radius, int bands, int stride)

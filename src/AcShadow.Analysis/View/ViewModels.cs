@@ -1,4 +1,5 @@
 using AcShadow.Analysis.Chart.Models;
+using AcShadow.Analysis.Chart.Output;
 
 namespace AcShadow.Analysis.View;
 
@@ -6,8 +7,7 @@ namespace AcShadow.Analysis.View;
 /// The layers a view can hold, in the order a file lists them: the chart's shape models that have geometry
 /// to show (the retail reference, the seed's union, the buggy client's one cylinder, the Setup's own
 /// spheres, and the fitted models a compiled scene can choose: each part's sphere, box or hull), a compiled
-/// scene's indoor cells, then the chart's failures. Colours are the Okabe–Ito ones the chart uses where they
-/// mean the same thing.
+/// scene's indoor cells, then the chart's failures. Colours are the one palette every drawing uses.
 /// </summary>
 public static class ViewModels
 {
@@ -24,26 +24,13 @@ public static class ViewModels
 
     public static IReadOnlyList<string> Order { get; } = [Retail, Union, FallbackCylinder, Spheres, PartSpheres, PartBoxes, PartHulls, Cells];
 
-    public static string Colour(string model) => model switch
-    {
-        Retail => "#56606e",
-        Union => "#cc79a7",
-        FallbackCylinder => "#d55e00",
-        Spheres => "#009e73",
-        PartSpheres => "#56b4e9",
-        PartBoxes => "#0072b2",
-        PartHulls => "#e69f00",
-        Cells => "#a08560",
-        _ => "#7f7f7f",
-    };
+    /// <summary>The model's colour in every drawing (<see cref="DrawingPalette"/>).</summary>
+    public static string Colour(string model) => DrawingPalette.Model(model);
 
     public static string Description(string model) =>
         model == Cells ? "indoor cells' walls, floors and ceilings: their retail physics polygons (a cell is never compiled)"
         : ShapeModels.Find(model)?.Description ?? model;
 
-    public const string FalsePassColour = "#d62728";
-    public const string FalseBlockColour = "#1f77b4";
-
-    /// <summary>A failure layer's name: "false passes: fallback-cylinder".</summary>
-    public static string FailureGroup(bool falsePass, string model) => (falsePass ? "false passes: " : "false blocks: ") + model;
+    /// <summary>A failure layer's name: "part-boxes false passes". A model's two layers sit side by side.</summary>
+    public static string FailureGroup(bool falsePass, string model) => model + (falsePass ? " false passes" : " false blocks");
 }

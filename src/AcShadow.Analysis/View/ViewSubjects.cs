@@ -8,6 +8,7 @@ using AcShadow.Core.Poses;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
@@ -25,7 +26,8 @@ public static class ViewSubjects
 {
     /// <param name="pose">The pose, door state and motion table the parts take, and the entity scale (its policy is ignored: both are drawn).</param>
     /// <param name="motions">Where motion tables and animations come from (the dat), for the retail pose.</param>
-    public static ViewSubject FromDat(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions pose, IMotionSource? motions)
+    /// <param name="fitted">Fitted models to draw as well (part-spheres, part-boxes, part-hulls: those a chart's markers name), fitted as the chart fits them.</param>
+    public static ViewSubject FromDat(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions pose, IMotionSource? motions, IReadOnlyCollection<string>? fitted = null)
     {
         var entityScale = pose.EntityScale;
         var retail = ShadowShapeBuilder.Build(setup, gfxObjs, pose with { Policy = ShapePolicy.Retail }, motions);
@@ -37,10 +39,34 @@ public static class ViewSubjects
                 new ModelShapes(ViewModels.Union, union.Shapes),
                 new ModelShapes(ViewModels.FallbackCylinder, [primitives.FallbackCylinder(entityScale)]),
                 new ModelShapes(ViewModels.Spheres, primitives.AllPrimitives(entityScale)),
+                .. Fitted(setup, gfxObjs, pose, motions, fitted ?? []),
             ], Dumps(gfxObjs))
         {
             Diagnostics = retail.Diagnostics,
         };
+    }
+
+    /// <summary>
+    /// The fitted models a chart compares, prepared exactly as the chart prepares them (<see cref="ShapeModels"/>),
+    /// so a model's failure markers stand with that model's shapes: a part's sphere, box or hull in its part's pose.
+    /// </summary>
+    private static IEnumerable<ModelShapes> Fitted(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions pose, IMotionSource? motions, IReadOnlyCollection<string> models)
+    {
+        var wanted = new[] { ViewModels.PartSpheres, ViewModels.PartBoxes, ViewModels.PartHulls }.Where(models.Contains).ToArray();
+        if (wanted.Length == 0) yield break;
+        var bsps = new CompiledBspCache(id => gfxObjs(id) is { } g ? BspExtractor.Extract(g) : null);
+        var chart = new ChartSubject(setup, gfxObjs, bsps.Get, pose.EntityScale) { Pose = pose, Motions = motions };
+        foreach (var name in wanted)
+        {
+            var prepared = ShapeModels.Find(name)!.Prepare(chart);
+            var kind = name switch { ViewModels.PartBoxes => "box", ViewModels.PartHulls => "hull", _ => "sphere" };
+            var drawn = prepared.Shapes.Select(s => s.Polytope is { } solid
+                    ? ShapeTessellation.Solid($"{s.Name} as {kind}", s.Pose, solid)
+                    : s.Shape.CollisionType == CollisionType.Sphere && float.IsFinite(s.Shape.Radius) && s.Shape.Radius > 0f
+                        ? ShapeTessellation.Sphere($"{s.Name} as {kind}", s.Shape.LocalPosition, s.Shape.Radius) : null)
+                .OfType<ViewShape>().ToArray();
+            yield return new ModelShapes(name, []) { Drawn = drawn };
+        }
     }
 
     /// <summary>A bare GfxObj a landblock places: the one-part object a scene export describes (<see cref="BareGfxObjShape"/>).</summary>

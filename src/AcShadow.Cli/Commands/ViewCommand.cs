@@ -3,6 +3,9 @@ using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
 using AcShadow.Analysis.Compile;
+using AcShadow.Core.Cells;
+using AcShadow.Core.Dat.Objects;
+using AcShadow.Fixtures.Cells;
 using AcShadow.Analysis.View;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
@@ -91,12 +94,13 @@ public static partial class ViewCommand
     {
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var scenes = new List<ViewScene>();
+        // The fitted models the chart's markers name are drawn too, so each marker stands with its model's shapes.
+        var fitted = failures.Select(f => f.Model).ToHashSet(StringComparer.Ordinal);
         foreach (var id in ids)
         {
             var setup = dat.Portal.ReadSetup(id)
                 ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(id)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
-            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, pose, dat.Portal);
-            DiagnosticPrinter.Print(console.Error, JsonIds.Format(id), subject.Diagnostics);
+            var subject = ViewSubjects.FromDat(setup, dat.Portal.ReadGfxObj, pose, dat.Portal, fitted);
             scenes.Add(ViewSceneBuilder.ForSetup(subject, failures));
         }
         if (landblock is { } lb)
@@ -115,12 +119,11 @@ public static partial class ViewCommand
                 {
                     made = o.Kind switch
                     {
-                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, pose, dat.Portal) : null,
+                        SceneObjectKind.Setup => dat.Portal.ReadSetup(o.Id) is { } s ? ViewSubjects.FromDat(s, dat.Portal.ReadGfxObj, pose, dat.Portal, fitted) : null,
                         SceneObjectKind.GfxObj => dat.Portal.ReadGfxObj(o.Id) is { } g ? ViewSubjects.FromBareGfxObj(g, dat.Portal.ReadGfxObj, pose.EntityScale) : null,
                         _ => null,
                     };
                     if (made is null) console.Error.WriteLine($"warning: {JsonIds.Format(o.Id)}: placed by landblock {LandblockIds.Short(lb)} but not a Setup or GfxObj of {dat.Description}; not drawn");
-                    else DiagnosticPrinter.Print(console.Error, JsonIds.Format(o.Id), made.Diagnostics);
                 }
                 catch (DatFormatException e)
                 {
@@ -128,13 +131,39 @@ public static partial class ViewCommand
                 }
                 return subjects[o.Id] = made;
             }
-            var placements = scene.Objects
-                .Select(o => (o, s: Subject(o)))
+            // The indoor cells and what they place, numbered on from the outdoor objects as `scene` numbers them.
+            var envCells = new List<EnvCell>();
+            var cells = new List<ViewCell>();
+            var structures = new CellStructures(dat.Portal);
+            foreach (var cellId in LandblockScene.CellIds(info))
+            {
+                EnvCell? envCell;
+                try
+                {
+                    envCell = dat.Cell.ReadEnvCell(cellId);
+                }
+                catch (DatFormatException e)
+                {
+                    console.Error.WriteLine($"warning: {JsonIds.Format(cellId)}: unreadable, not drawn: {e.Message}");
+                    continue;
+                }
+                if (envCell is null)
+                {
+                    console.Error.WriteLine($"warning: {JsonIds.Format(cellId)}: counted by landblock {LandblockIds.Short(lb)} but not in {dat.Cell.Info.FileName}; not drawn");
+                    continue;
+                }
+                envCells.Add(envCell);
+                var (geometry, problem) = structures.For(envCell.EnvironmentFileId, envCell.CellStructure);
+                if (geometry is null) console.Error.WriteLine($"warning: {JsonIds.Format(cellId)}: {problem}; its walls are not drawn");
+                else cells.Add(new ViewCell(cellId, new Frame(envCell.Position.Position, envCell.Position.Rotation), geometry.Physics));
+            }
+            var placements = AcShadow.Analysis.Compile.PlacedObject.Of(scene with { Cells = envCells })
+                .Select(p => (o: p.Object, s: Subject(p.Object)))
                 .Where(p => p.s is not null)
                 .Select(p => new ViewPlacement(p.o.Index, p.s!, new Frame(p.o.Frame.Position, p.o.Frame.Rotation)))
                 .ToArray();
             var c = scene.Coordinates;
-            scenes.Add(ViewSceneBuilder.ForLandblock(lb, new Vector3((float)c.WorldOriginX, (float)c.WorldOriginY, 0), placements, failures, [CompiledSceneNote]));
+            scenes.Add(ViewSceneBuilder.ForLandblock(lb, new Vector3((float)c.WorldOriginX, (float)c.WorldOriginY, 0), placements, cells, failures, [CompiledSceneNote]));
         }
         return scenes;
     }
@@ -195,14 +224,38 @@ public static partial class ViewCommand
                 var subject = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, scene.Policy.Name(), o.Shapes, Dump);
                 placements.Add(new ViewPlacement(o.Index, subject, frames[o.Index]));
             }
-            scenes.Add(ViewSceneBuilder.ForLandblock(scene.LandblockId, scene.WorldOrigin, placements, failures,
-                ["Read from the fixtures' scene.json; " + CompiledSceneNote[0..1].ToLowerInvariant() + CompiledSceneNote[1..]]));
+            // The cell files beside it: each cell's walls, and what it places numbered on from the outdoor objects.
+            var cells = new List<ViewCell>();
+            var index = scene.Objects.Count;
+            foreach (var cell in CellFiles(folder, scene.LandblockId).Select(id => ReadCell(folder, id)))
+            {
+                cells.Add(new ViewCell(cell.CellId, cell.LandblockFrame, cell.Physics));
+                foreach (var o in cell.Objects)
+                {
+                    var at = index++;
+                    if (o.File is null) continue;
+                    var subject = o.Kind == SceneObjectKind.Setup ? Setup(o.Id) : ViewSubjects.FromSceneGfxObj(o.Id, scene.Policy.Name(), o.Shapes, Dump);
+                    placements.Add(new ViewPlacement(at, subject, o.LandblockFrame));
+                }
+            }
+            scenes.Add(ViewSceneBuilder.ForLandblock(scene.LandblockId, scene.WorldOrigin, placements, cells, failures,
+                ["Read from the fixtures' scene.json and cell files; " + CompiledSceneNote[0..1].ToLowerInvariant() + CompiledSceneNote[1..]]));
         }
-        foreach (var s in subjects.Values) DiagnosticPrinter.Print(console.Error, JsonIds.Format(s.Id), s.Diagnostics);
         return scenes;
     }
 
     private const string ShadowSuffix = ".shadow.json";
+
+    /// <summary>The ids of the cell files a fixtures folder holds for a landblock, in id order.</summary>
+    private static IReadOnlyList<uint> CellFiles(string folder, uint landBlockInfoId)
+    {
+        var dir = Path.Combine(folder, "cells");
+        if (!Directory.Exists(dir)) return [];
+        const string Suffix = ".cell.json";
+        return Directory.GetFiles(dir, "*" + Suffix).Select(f => Path.GetFileName(f)[..^Suffix.Length])
+            .Select(n => JsonIds.TryParse(n, out var id) ? id : (uint?)null).OfType<uint>()
+            .Where(id => (id & 0xFFFF0000u) == (landBlockInfoId & 0xFFFF0000u)).Order().ToArray();
+    }
 
     /// <summary>
     /// A folder `acshadow scene` wrote, read once: refused unless the consumer library loads it (<see cref="CompiledSceneDrawing.Read"/>)
@@ -251,6 +304,23 @@ public static partial class ViewCommand
     [System.Text.RegularExpressions.GeneratedRegex(@"^(gfxobjs|cells)/0x[0-9A-F]{8}\.bsp\.json$")]
     private static partial System.Text.RegularExpressions.Regex DumpPath();
 
+    private static CellFile ReadCell(string folder, uint cellId)
+    {
+        InputFile.RequireRegular(Path.Combine(folder, FileFormats.Cell.PathFor(cellId)), ExitCodes.Usage, "--fixtures", "pass the folder acshadow wrote");
+        try
+        {
+            return CellFixture.Load(folder, cellId).File;
+        }
+        catch (Exception e) when (e is FormatException or JsonException or InvalidOperationException or KeyNotFoundException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {e.Message}");
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.Usage, $"--fixtures: cannot read the cell file of {JsonIds.Format(cellId)}: {e.Message}");
+        }
+    }
+
     private static T ReadFixture<T>(string path, Func<string, T> read)
     {
         InputFile.RequireRegular(path, ExitCodes.Usage, "--fixtures", "pass the folder acshadow wrote");
@@ -295,6 +365,9 @@ public static partial class ViewCommand
             new OutputFile(s.Name + ".glb", GlbWriter.Write(s)),
             OutputFile.Text(s.Name + ".svg", ThreeViewSvg.Write(s)),
         }).ToArray();
+        var printed = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var warning in scenes.SelectMany(s => s.Warnings).Where(printed.Add))
+            console.Error.WriteLine("warning: " + warning);
         using (var folder = OutputFolder.Open(outDir))
         {
             folder.RefuseForeign(files);

@@ -48,6 +48,10 @@ public static class ShadowShapeBuilder
             diagnostics.Add(new(DiagnosticCodes.NoShapes, "no collision shapes: nothing of this object collides"));
         foreach (var shape in shapes.Where(s => !IsFinite(s)))
             diagnostics.Add(new(DiagnosticCodes.NonFinite, $"{Describe(shape)}: non-finite position, rotation, scale or radius (NaN or infinity in the dat)"));
+        // The Setup's own primitives are recorded in every shadow file and drawn by view even when the policy
+        // builds no shape from them (a BSP object's Spheres, its Radius x Height): a non-finite one is said too.
+        foreach (var problem in NonFinitePrimitives(setup).Where(p => !diagnostics.Any(d => d.Code == DiagnosticCodes.NonFinite && d.Message.StartsWith(p.Split(':')[0] + ":", StringComparison.Ordinal))))
+            diagnostics.Add(new(DiagnosticCodes.NonFinite, problem));
         return new ShadowShapeSet(setup.Id, options.Policy, placement, scale, partsHaveBsp, shapes, diagnostics) { Pose = provenance };
     }
 
@@ -110,7 +114,7 @@ public static class ShadowShapeBuilder
                     var s = setup.DefaultScale[i];
                     partScale *= s.Z;
                     if (s.X != s.Z || s.Y != s.Z)
-                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z"));
+                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z")));
                 }
                 shapes.Add(BspShape(i, gfx, partPose, scale, partScale));
             }
@@ -192,6 +196,20 @@ public static class ShadowShapeBuilder
         var center = position + QuaternionRotation.Rotate(pose.Rotation, root.Center * partScale);
         var radius = root.Radius * partScale;
         return new ShadowShape(ShapeSource.Part, partIndex, gfx.Id, CollisionType.Bsp, position, pose.Rotation, partScale, radius, 0f, new Sphere(center, radius));
+    }
+
+    /// <summary>The Setup's CylSpheres, Spheres, Radius and Height that hold NaN or infinity, each as a message.</summary>
+    private static IEnumerable<string> NonFinitePrimitives(Setup setup)
+    {
+        static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+        for (var i = 0; i < setup.CylSpheres.Count; i++)
+            if (!Finite(setup.CylSpheres[i].Origin) || !float.IsFinite(setup.CylSpheres[i].Radius) || !float.IsFinite(setup.CylSpheres[i].Height))
+                yield return $"CylSphere {i}: non-finite origin, radius or height (NaN or infinity in the dat)";
+        for (var i = 0; i < setup.Spheres.Count; i++)
+            if (!Finite(setup.Spheres[i].Center) || !float.IsFinite(setup.Spheres[i].Radius))
+                yield return $"Sphere {i}: non-finite center or radius (NaN or infinity in the dat)";
+        if (!float.IsFinite(setup.Radius) || !float.IsFinite(setup.Height))
+            yield return string.Create(System.Globalization.CultureInfo.InvariantCulture, $"Setup Radius x Height: non-finite ({setup.Radius} x {setup.Height}; NaN or infinity in the dat)");
     }
 
     private static bool IsFinite(ShadowShape s) =>

@@ -46,9 +46,9 @@ public class FixtureLibraryTests
     public void The_readme_example_blocks_a_sphere_in_the_doorway_and_not_one_beside_it()
     {
         var door = Committed.Setup(0x020019FF)
-            .PlaceAt(new Vector3(32580f, 34663.9f, 12f), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 2));
-        Assert.True(door.Overlaps(worldCenter: new Vector3(32580f, 34664.5f, 13f), radius: 0.5f));
-        Assert.False(door.Overlaps(worldCenter: new Vector3(32583f, 34668f, 13f), radius: 0.5f));
+            .PlaceAt(new Vector3(32584f, 34668f, 12f), Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 2));
+        Assert.True(door.Overlaps(worldCenter: new Vector3(32584f, 34668.6f, 13f), radius: 0.5f));
+        Assert.False(door.Overlaps(worldCenter: new Vector3(32587f, 34672.1f, 13f), radius: 0.5f));
         Assert.Throws<ArgumentException>(() => Committed.Setup(0x020019FF).PlaceAt(Vector3.Zero, default));
     }
 

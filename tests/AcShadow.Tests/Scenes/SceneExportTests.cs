@@ -57,8 +57,8 @@ public class SceneExportTests
             Assert.Equal(["setup", "gfxObj", "setup", "gfxObj"], objects.Select(o => o.GetProperty("kind").GetString()));
 
             var door = objects[0];
-            Assert.Equal("[132, 103.9, 12]", door.GetProperty("landblockFrame").GetProperty("origin").GetRawText().Replace("\n", ""));
-            Assert.Equal([32580d, 34663.9d, 12d], door.GetProperty("worldFrame").GetProperty("origin").EnumerateArray().Select(e => e.GetDouble()));
+            Assert.Equal("[136, 108, 12]", door.GetProperty("landblockFrame").GetProperty("origin").GetRawText().Replace("\n", ""));
+            Assert.Equal([32584d, 34668d, 12d], door.GetProperty("worldFrame").GetProperty("origin").EnumerateArray().Select(e => e.GetDouble()));
             Assert.Equal(door.GetProperty("landblockFrame").GetProperty("orientation").GetRawText(), door.GetProperty("worldFrame").GetProperty("orientation").GetRawText());
             Assert.False(door.TryGetProperty("shapes", out _));
 

@@ -155,6 +155,21 @@ public class ShadowShapeBuilderRecordTests
         Assert.Contains(set.Diagnostics, d => d.Code == DiagnosticCodes.NoShapes);
     }
 
+    /// <summary>Issue 32 item 9: a NaN Sphere radius or an infinite Setup Radius on a BSP object builds no shape from them, and is still said.</summary>
+    [Fact]
+    public void A_NaN_sphere_radius_and_an_infinite_setup_radius_are_non_finite_diagnostics_even_when_no_shape_uses_them()
+    {
+        var setup = Setup(0x0200000C, [0x0100000C], spheres: [new Sphere(Vector3.Zero, float.NaN)], radius: float.PositiveInfinity);
+        foreach (var policy in new[] { ShapePolicy.Retail, ShapePolicy.Union })
+        {
+            var set = ShadowShapeBuilder.Build(setup, Lookup(BoxGfxObj(0x0100000C)), new(policy));
+            var nonFinite = set.Diagnostics.Where(d => d.Code == DiagnosticCodes.NonFinite).Select(d => d.Message).ToArray();
+            Assert.Contains(nonFinite, m => m.StartsWith("Sphere 0: ", StringComparison.Ordinal));
+            Assert.Contains(nonFinite, m => m.StartsWith("Setup Radius x Height: non-finite (", StringComparison.Ordinal));
+            Assert.Equal(nonFinite.Distinct().Count(), nonFinite.Length);
+        }
+    }
+
     [Fact]
     public void Bsp_local_sphere_is_the_root_sphere_moved_into_entity_space()
     {

@@ -94,6 +94,7 @@ public sealed class CompiledSceneViewTests
     {
         var run = CliRun.Of(["view", .. args, "--out", output.Path]);
         Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Error}");
+        GltfValidator.AssertValid(output.Path);
         return run.Out;
     }
 
@@ -125,16 +126,17 @@ public sealed class CompiledSceneViewTests
         Assert.Contains("view 0x1234-compiled: spheres 1, fallback-cylinder 1, part-boxes 1, part-hulls 1, retail 1 shape(s)", printed);
         var path = Path.Combine(output.Path, "0x1234-compiled.glb");
         var root = ViewCommandTests.ReadStrict(path).DefaultScene.VisualChildren.Single();
-        Assert.Equal("0x1234-compiled", root.Name);
-        Assert.Equal(GlbWriter.ToGltf(new Vector3(0x12 * 192, 0x34 * 192, 0)), root.LocalTransform.Translation);
+        Assert.StartsWith("Landblock 0x1234 compiled: ", root.Name);
+        Assert.Equal(Vector3.Zero, root.LocalTransform.Translation);
+        Assert.Equal(new Vector3(0x12 * 192, 0x34 * 192, 0), ViewCommandTests.WorldOrigin(root));
         Assert.Equal(["spheres", "fallback-cylinder", "part-boxes", "part-hulls", "retail"], root.VisualChildren.Select(g => g.Name));
-        Node Only(string group) => root.VisualChildren.Single(g => g.Name == group).VisualChildren.Single();
+        Node Only(string group) => root.VisualChildren.Single(g => ViewCommandTests.Layer(g) == group).VisualChildren.Single();
         Assert.Equal("spheres: #0 Setup 0x02000001", Only("spheres").Name);
         Assert.Equal("fallback-cylinder: #1 Setup 0x02000002", Only("fallback-cylinder").Name);
         Assert.Equal("part-boxes: #2 GfxObj 0x01000003", Only("part-boxes").Name);
         Assert.Equal("part-hulls: #3 GfxObj 0x01000004", Only("part-hulls").Name);
         Assert.Equal("retail: #4 Setup 0x020019FF", Only("retail").Name);
-        Assert.Equal(["part-boxes: part 0 (GfxObj 0x01000003) as box"], Only("part-boxes").VisualChildren.Select(n => n.Name));
+        Assert.Equal(["part-boxes: #2 GfxObj 0x01000003: part 0 (GfxObj 0x01000003) as box"], Only("part-boxes").VisualChildren.Select(n => n.Name));
 
         // The box: 6 faces of 2 triangles. Its half extents (0.5, 0.25, 0.5) turned 90° about z span x ±0.25,
         // y ±0.5, z 0..1 about (0, 0, 0.5); the part's scale 2 and offset (1, 0, 0) make x 0.5..1.5, y −1..1,
@@ -165,7 +167,7 @@ public sealed class CompiledSceneViewTests
         Assert.False(ModelRoot.Validate(path).HasErrors);
         var svg = File.ReadAllText(Path.Combine(output.Path, "0x1234-compiled.svg"));
         foreach (var model in new[] { "spheres", "fallback-cylinder", "part-boxes", "part-hulls", "retail" })
-            Assert.Contains($">{model} (1 shape)<", svg);
+            Assert.Contains($">{model}: 1 shape<", svg);
         Assert.Contains("#2 GfxObj 0x01000003 (part-boxes)", svg);
         Assert.Contains("1 placed object(s) have no shape to draw", svg);
     }
@@ -184,17 +186,17 @@ public sealed class CompiledSceneViewTests
 
         var json = File.ReadAllText(Path.Combine(scene.Path, FileFormats.CompiledScene.Path));
         var worldOrigin = System.Text.Json.JsonDocument.Parse(json).RootElement.GetProperty("worldOrigin").EnumerateArray().Select(e => e.GetSingle()).ToArray();
-        Assert.Equal(GlbWriter.ToGltf(new Vector3(worldOrigin[0], worldOrigin[1], worldOrigin[2])), root.LocalTransform.Translation);
+        Assert.Equal(new Vector3(worldOrigin[0], worldOrigin[1], worldOrigin[2]), ViewCommandTests.WorldOrigin(root));
         foreach (var o in loaded.Objects)
         {
             var kind = o.Kind == SceneObjectKind.Setup ? "Setup" : "GfxObj";
-            var node = root.VisualChildren.Single(g => g.Name == o.Model).VisualChildren.Single(n => n.Name == $"{o.Model}: #{o.Index} {kind} {JsonIds.Format(o.Id)}");
+            var node = root.VisualChildren.Single(g => ViewCommandTests.Layer(g) == o.Model).VisualChildren.Single(n => n.Name == $"{o.Model}: #{o.Index} {kind} {JsonIds.Format(o.Id)}");
             Assert.Equal(GlbWriter.ToGltf(o.LandblockFrame.Position), node.LocalTransform.Translation);
             Assert.Equal(o.Shapes, node.VisualChildren.Count());
         }
         // The column's hull: each face a fan of n − 2 triangles, its bounds its vertices posed in the landblock.
         var column = loaded.Objects.Single(o => o.Model == "part-hulls");
-        var hull = root.VisualChildren.Single(g => g.Name == "part-hulls").VisualChildren.Single().VisualChildren.Single();
+        var hull = root.VisualChildren.Single(g => ViewCommandTests.Layer(g) == "part-hulls").VisualChildren.Single().VisualChildren.Single();
         var hullJson = System.Text.Json.JsonDocument.Parse(json).RootElement.GetProperty("objects").EnumerateArray()
             .Single(o => o.GetProperty("index").GetInt32() == column.Index).GetProperty("shapes")[0];
         Assert.Equal(hullJson.GetProperty("faces").EnumerateArray().Sum(f => f.GetProperty("vertices").GetArrayLength() - 2), ViewCommandTests.Triangles(hull));
@@ -208,7 +210,7 @@ public sealed class CompiledSceneViewTests
         var posed = hullJson.GetProperty("vertices").EnumerateArray().Select(v => frame.ToEntity(pose.ToEntity(Vec(v)))).ToArray();
         AssertClose(Gltf(posed.Aggregate(Vector3.Min), posed.Aggregate(Vector3.Max)), LandblockBounds(hull), 1e-3f);
         // Each cell: its retail polygons from its dump, in the cell's frame.
-        var cells = root.VisualChildren.Single(g => g.Name == "cells").VisualChildren.ToArray();
+        var cells = root.VisualChildren.Single(g => ViewCommandTests.Layer(g) == "cells").VisualChildren.ToArray();
         Assert.Equal(loaded.Cells.Select(c => $"cells: cell {JsonIds.Format(c.CellId)}"), cells.Select(n => n.Name));
         foreach (var (cell, node) in loaded.Cells.Zip(cells))
         {
@@ -259,11 +261,13 @@ public sealed class CompiledSceneViewTests
         using var output = new TempDir();
         View(output, "--scene", scene.Path, "--chart", chart.Path);
         var root = ViewCommandTests.ReadStrict(Path.Combine(output.Path, "0x1234-compiled.glb")).DefaultScene.VisualChildren.Single();
-        Assert.Equal(["spheres", "fallback-cylinder", "part-boxes", "part-hulls", "retail", "false blocks: part-boxes"], root.VisualChildren.Select(g => g.Name));
+        Assert.Equal(["spheres", "fallback-cylinder", "part-boxes", "part-hulls", "retail", "part-boxes false blocks"], root.VisualChildren.Select(ViewCommandTests.Layer));
         var marker = root.VisualChildren.Last().VisualChildren.Single();
-        Assert.Equal("false blocks: part-boxes: #2 GfxObj 0x01000003", marker.Name);
+        Assert.Equal("part-boxes false blocks: #2 GfxObj 0x01000003", marker.Name);
         // The probe at (1.6, 0, 1) in the object's frame, which stands at (6, 2, 0).
-        AssertClose(Gltf(new Vector3(7.6f, 2, 1) - new Vector3(ViewSceneBuilder.MarkerRadius), new Vector3(7.6f, 2, 1) + new Vector3(ViewSceneBuilder.MarkerRadius)),
+        // A false block is a cube, centre to corner MarkerRadius.
+        var half = ViewSceneBuilder.MarkerRadius / MathF.Sqrt(3);
+        AssertClose(Gltf(new Vector3(7.6f, 2, 1) - new Vector3(half), new Vector3(7.6f, 2, 1) + new Vector3(half)),
             LandblockBounds(marker.VisualChildren.Single()));
     }
 

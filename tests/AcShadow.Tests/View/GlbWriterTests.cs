@@ -41,14 +41,14 @@ public sealed class GlbWriterTests
         oneSided.AddPolygon([new(0, 0, 0), new(1, 0, 0), new(0, 2, 0)], Up);
         var twoSided = new TriangleMesh();
         twoSided.AddPolygon([new(0, 0, 0), new(0, 0, 3), new(1, 0, 3), new(1, 0, 0)], -Vector3.UnitY);
-        var shape = new ViewShape("part 0 GfxObj 0x01000001", oneSided, twoSided, new PointsOutline([]), Vector3.Zero);
+        var shape = new ViewShape("part 0 GfxObj 0x01000001", oneSided, twoSided, new PointsOutline([], FalsePass: true), Vector3.Zero);
         var turned = Quaternion.CreateFromAxisAngle(Up, MathF.PI / 2);
         ViewObject[] objects =
         [
             new("#1 Setup 0x02000001", new Frame(new Vector3(10, 20, 1.5f), turned), [shape]),
             new("#2 Setup 0x02000001", Frame.Identity, [shape]),
         ];
-        return new ViewScene("0xA9B4", "title", new Vector3(192, 384, 0), [new ViewGroup("retail", "", "#ffffff", objects)], []);
+        return new ViewScene("0xA9B4", "title", new Vector3(192, 384, 0), [new ViewGroup("retail", "", "#ffffff", objects) { Filled = true }], []);
     }
 
     private static ModelRoot Read(byte[] glb) => ModelRoot.ParseGLB(glb, new ReadSettings { Validation = ValidationMode.Strict });
@@ -59,16 +59,17 @@ public sealed class GlbWriterTests
         var model = Read(GlbWriter.Write(Scene()));
         Assert.Equal(GlbWriter.Generator, model.Asset.Generator);
         var root = Assert.Single(model.DefaultScene.VisualChildren);
-        Assert.Equal("0xA9B4", root.Name);
-        Assert.Equal(new Vector3(192, 0, -384), root.LocalTransform.Translation);
+        Assert.Equal("title", root.Name);
+        Assert.Equal(Vector3.Zero, root.LocalTransform.Translation);
+        Assert.Equal(new Vector3(192, 384, 0), ViewCommandTests.WorldOrigin(root));
         var group = Assert.Single(root.VisualChildren);
         Assert.Equal("retail", group.Name);
         Assert.Equal(["retail: #1 Setup 0x02000001", "retail: #2 Setup 0x02000001"], group.VisualChildren.Select(n => n.Name));
         var shapes = group.VisualChildren.Select(o => Assert.Single(o.VisualChildren)).ToArray();
-        Assert.Equal(["retail: #1 part 0 GfxObj 0x01000001", "retail: #2 part 0 GfxObj 0x01000001"], shapes.Select(n => n.Name));
+        Assert.Equal(["retail: part 0 GfxObj 0x01000001", "retail: part 0 GfxObj 0x01000001"], shapes.Select(n => n.Name));
         // A shape placed twice is one mesh, named where it was first placed.
         Assert.Same(shapes[0].Mesh, shapes[1].Mesh);
-        Assert.Equal("retail: #1 part 0 GfxObj 0x01000001", Assert.Single(model.LogicalMeshes).Name);
+        Assert.Equal("retail: part 0 GfxObj 0x01000001", Assert.Single(model.LogicalMeshes).Name);
 
         var primitives = shapes[0].Mesh.Primitives;
         Assert.Equal(2, primitives.Count);

@@ -1,3 +1,4 @@
+using System.Text.RegularExpressions;
 using System.Diagnostics;
 using System.Globalization;
 using System.Numerics;
@@ -28,6 +29,7 @@ public sealed class ViewCommandTests
     {
         var run = CliRun.Of(["view", .. args, "--out", dir.Path]);
         Assert.True(run.ExitCode == 0, $"exit {run.ExitCode}: {run.Error}");
+        GltfValidator.AssertValid(dir.Path);
         return run.Out;
     }
 
@@ -59,6 +61,16 @@ public sealed class ViewCommandTests
         return (min, max);
     }
 
+    /// <summary>A group node's layer name: its node name without the note in parentheses ("union (…)" is "union").</summary>
+    internal static string Layer(Node group) => group.Name.Split(" (")[0];
+
+    /// <summary>The root's extras: where the view's origin is in the world (dat axes).</summary>
+    internal static Vector3 WorldOrigin(Node root)
+    {
+        var origin = root.Extras!["worldOrigin"]!.AsArray();
+        return new Vector3((float)origin[0]!, (float)origin[1]!, (float)origin[2]!);
+    }
+
     internal static int Triangles(Node node) => node.Mesh.Primitives.Sum(p => p.GetTriangleIndices().Count());
 
     [Fact]
@@ -72,19 +84,24 @@ public sealed class ViewCommandTests
         Assert.Equal(GlbWriter.Generator, model.Asset.Generator);
 
         var root = Assert.Single(model.DefaultScene.VisualChildren);
-        Assert.Equal("0x020019FF", root.Name);
-        Assert.Equal(["retail", "union", "fallback-cylinder", "spheres"], root.VisualChildren.Select(g => g.Name));
-        string[] Shapes(string group) => root.VisualChildren.Single(g => g.Name == group).VisualChildren.Single().VisualChildren.Select(n => n.Name).ToArray();
-        Assert.Equal(["retail: part 0 GfxObj 0x010044B5", "retail: part 1 GfxObj 0x010044B6", "retail: part 2 GfxObj 0x010044B6"], Shapes("retail"));
-        Assert.Equal(["union: Sphere 0 as cylinder", "union: part 0 GfxObj 0x010044B5", "union: part 1 GfxObj 0x010044B6", "union: part 2 GfxObj 0x010044B6"], Shapes("union").Order(StringComparer.Ordinal));
+        Assert.Equal("Setup 0x020019FF", root.Name);
+        Assert.Equal(Vector3.Zero, WorldOrigin(root));
+        Assert.Equal(["retail", "union", "fallback-cylinder", "spheres"], root.VisualChildren.Select(Layer));
+        // Union's three parts are retail's: drawn once, in retail's layer, and union's name says so.
+        Assert.Equal("union (3 shape(s) the same as retail's are drawn in the retail layer only)", root.VisualChildren.ElementAt(1).Name);
+        string[] Shapes(string group) => root.VisualChildren.Single(g => Layer(g) == group).VisualChildren.Single().VisualChildren.Select(n => n.Name).ToArray();
+        Assert.Equal(["retail: part 0 (GfxObj 0x010044B5)", "retail: part 1 (GfxObj 0x010044B6)", "retail: part 2 (GfxObj 0x010044B6)"], Shapes("retail"));
+        Assert.Equal(["union: Sphere 0 as cylinder"], Shapes("union"));
         Assert.Equal(["fallback-cylinder: Setup Radius x Height"], Shapes("fallback-cylinder"));
         Assert.Equal(["spheres: Sphere 0"], Shapes("spheres"));
-        Assert.Equal(9, model.LogicalMeshes.Count);
+        Assert.Equal(6, model.LogicalMeshes.Count);
+        // The reference is opaque; every other layer blends over it, so retail shows through.
+        Assert.All(model.LogicalMaterials, m => Assert.Equal(m.Name.StartsWith("retail", StringComparison.Ordinal) ? AlphaMode.OPAQUE : AlphaMode.BLEND, m.Alpha));
 
         // Against the committed shadow file: each retail part's triangles (a polygon of n vertices is n − 2)
         // and bounds (its posed physics vertices, dat Z-up turned to glTF Y-up as (x, z, −y)).
         var door = CommittedDoor();
-        var retail = root.VisualChildren.Single(g => g.Name == "retail").VisualChildren.Single().VisualChildren.ToArray();
+        var retail = root.VisualChildren.Single(g => Layer(g) == "retail").VisualChildren.Single().VisualChildren.ToArray();
         for (var i = 0; i < door.Shadow.Shapes.Count; i++)
         {
             var shape = door.Shadow.Shapes[i];
@@ -96,7 +113,7 @@ public sealed class ViewCommandTests
             AssertClose(vertices.Aggregate(Vector3.Max), max);
         }
         // The soda can: the Setup's Radius × Height (0.141 × 0.2) standing at the origin; glTF's up is y.
-        var can = root.VisualChildren.Single(g => g.Name == "fallback-cylinder").VisualChildren.Single().VisualChildren.Single();
+        var can = root.VisualChildren.Single(g => Layer(g) == "fallback-cylinder").VisualChildren.Single().VisualChildren.Single();
         var (canMin, canMax) = WorldBounds(can);
         AssertClose(new Vector3(-0.141f, 0f, -0.141f), canMin);
         AssertClose(new Vector3(0.141f, 0.2f, 0.141f), canMax);
@@ -140,11 +157,11 @@ public sealed class ViewCommandTests
         var dat = ReadStrict(Path.Combine(fromDat.Path, "0x020019FF.glb")).DefaultScene.VisualChildren.Single();
         var fixtures = ReadStrict(Path.Combine(fromFixtures.Path, "0x020019FF.glb")).DefaultScene.VisualChildren.Single();
         // A retail shadow file does not say what union would pose, so that layer is left out.
-        Assert.Equal(["retail", "fallback-cylinder", "spheres"], fixtures.VisualChildren.Select(g => g.Name));
+        Assert.Equal(["retail", "fallback-cylinder", "spheres"], fixtures.VisualChildren.Select(Layer));
         foreach (var group in fixtures.VisualChildren)
         {
             var shapes = group.VisualChildren.Single().VisualChildren.ToArray();
-            var same = dat.VisualChildren.Single(g => g.Name == group.Name).VisualChildren.Single().VisualChildren.ToArray();
+            var same = dat.VisualChildren.Single(g => Layer(g) == Layer(group)).VisualChildren.Single().VisualChildren.ToArray();
             Assert.Equal(same.Select(n => n.Name), shapes.Select(n => n.Name));
             Assert.Equal(same.Select(Triangles), shapes.Select(Triangles));
             Assert.Equal(same.Select(WorldBounds), shapes.Select(WorldBounds));
@@ -163,14 +180,19 @@ public sealed class ViewCommandTests
         var model = ReadStrict(Path.Combine(dir.Path, "0xA9B4.glb"));
         var root = model.DefaultScene.VisualChildren.Single();
         var scene = set.Scene!;
-        Assert.Equal(GlbWriter.ToGltf(scene.WorldOrigin), root.LocalTransform.Translation);
-        var retail = root.VisualChildren.Single(g => g.Name == "retail");
+        // The root stays at the origin (a viewer opens on the geometry); the world origin is in its extras.
+        Assert.Equal(Vector3.Zero, root.LocalTransform.Translation);
+        Assert.Equal(scene.WorldOrigin, WorldOrigin(root));
+        var retail = root.VisualChildren.Single(g => Layer(g) == "retail");
         var placed = scene.Objects.Where(o => o.File is not null).ToArray();
-        Assert.Equal(placed.Length, retail.VisualChildren.Count());
+        // The four outdoor objects and the one cell 0xA9B40100 places (#4), numbered on as `scene` numbers it.
+        Assert.Equal(placed.Length + 1, retail.VisualChildren.Count());
+        Assert.Single(retail.VisualChildren, n => n.Name.StartsWith("retail: #4 Setup 0x02003300", StringComparison.Ordinal));
+        Assert.Equal(["cells: cell 0xA9B40100", "cells: cell 0xA9B40101"], root.VisualChildren.Single(g => Layer(g) == "cells").VisualChildren.Select(n => n.Name));
         foreach (var o in placed)
         {
             var node = retail.VisualChildren.Single(n => n.Name.StartsWith($"retail: #{o.Index} ", StringComparison.Ordinal));
-            AssertClose(GlbWriter.ToGltf(o.WorldFrame.Position), node.WorldMatrix.Translation, 0.01f);
+            AssertClose(GlbWriter.ToGltf(o.WorldFrame.Position - scene.WorldOrigin), node.WorldMatrix.Translation, 0.01f);
         }
     }
 
@@ -186,12 +208,19 @@ public sealed class ViewCommandTests
         var passes = failures.Count(f => f.Model == "fallback-cylinder" && f.FalsePass);
         Assert.True(passes > 0, "the soda can lets probes through the doorway");
         var root = ReadStrict(Path.Combine(dir.Path, "0x020019FF.glb")).DefaultScene.VisualChildren.Single();
-        var markers = root.VisualChildren.Single(g => g.Name == "false passes: fallback-cylinder").VisualChildren.Single().VisualChildren.Single();
-        Assert.Equal($"false passes: fallback-cylinder: {passes} false pass{(passes == 1 ? "" : "es")}", markers.Name);
-        // Each marker is a small sphere of 4 bands × 8 segments: 8 triangles at each pole, 2 bands of 8 quads between.
-        Assert.Equal(passes * (8 + 8 + 2 * 8 * 2), Triangles(markers));
+        var group = root.VisualChildren.Single(g => Layer(g) == "fallback-cylinder false passes");
+        Assert.Equal($"fallback-cylinder false passes ({passes} probe(s) of radius 0.5 m, marked at their centres)", group.Name);
+        var markers = group.VisualChildren.Single().VisualChildren.Single();
+        Assert.Equal($"fallback-cylinder false passes: {passes} false pass{(passes == 1 ? "" : "es")} of fallback-cylinder (probe r 0.5 m)", markers.Name);
+        // Each false pass is an octahedron (8 triangles); each false block a cube (12).
+        Assert.Equal(passes * 8, Triangles(markers));
+        // A model's two verdicts sit side by side, in the model's colour.
+        var layers = root.VisualChildren.Select(Layer).ToList();
+        Assert.Equal(layers.IndexOf("fallback-cylinder false passes") + 1, layers.IndexOf("fallback-cylinder false blocks"));
         var svg = File.ReadAllText(Path.Combine(dir.Path, "0x020019FF.svg"));
-        Assert.Equal(3 * failures.Count, svg.Split("r=\"3.20\"").Length - 1);
+        Assert.Contains("<g id=\"layer-fallback-cylinder-false-passes\"><title>fallback-cylinder false passes (", svg);
+        // Three views of each false pass as a diamond in fallback-cylinder's colour, and one in the legend.
+        Assert.Equal(3 * passes + 1, Regex.Matches(svg, "<polygon [^>]*fill=\"#D55E00\" stroke=\"#ffffff\"").Count);
     }
 
     [Fact]

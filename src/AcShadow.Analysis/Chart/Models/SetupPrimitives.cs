@@ -57,7 +57,13 @@ public sealed record SetupPrimitives(IReadOnlyList<CylSphere> CylSpheres, IReadO
     private static JsonElement Member(JsonElement e, string name) =>
         e.ValueKind == JsonValueKind.Object && e.TryGetProperty(name, out var v) ? v : throw new FormatException($"missing \"{name}\"");
 
-    private static float Num(JsonElement e) => e.ValueKind == JsonValueKind.Number ? e.GetSingle() : throw new FormatException("a number was expected");
+    /// <summary>A number; <c>null</c> is how a shadow file writes a non-finite value (JSON has no NaN), read back as NaN.</summary>
+    private static float Num(JsonElement e) => e.ValueKind switch
+    {
+        JsonValueKind.Number => e.GetSingle(),
+        JsonValueKind.Null => float.NaN,
+        _ => throw new FormatException("a number was expected"),
+    };
 
     private static Vector3 Vec(JsonElement e)
     {

@@ -64,10 +64,10 @@ public static class FailureMapSvg
 
             var slicePass = slice.Count(i => chart.Reference[i] && !outcome.Answers[i]);
             var sliceBlock = slice.Count(i => !chart.Reference[i] && outcome.Answers[i]);
-            svg.Text(px, py - 30, outcome.Model + (m == 0 ? " (reference)" : ""), 14, "start", "bold", ChartPalette.Model(m));
+            svg.Text(px, py - 30, outcome.Model + (m == 0 ? " (reference)" : ""), 14, "start", "bold", DrawingPalette.Model(outcome.Model));
             svg.Text(px, py - 14,
                 $"{F(outcome.AgreementPercent, 2)}% agree overall; here: {I(slicePass)} false pass, {I(sliceBlock)} false block", 11.5);
-            svg.Rect(px, py, plotW, plotH, "#ffffff", ChartPalette.Axis);
+            svg.Rect(px, py, plotW, plotH, "#ffffff", DrawingPalette.Axis);
 
             // A row's neighbouring cells of one verdict are drawn as one rectangle: the same picture in about a
             // ninth of the bytes, which matters when a whole dat's maps are written.
@@ -156,22 +156,22 @@ public static class FailureMapSvg
         if (open is { } rest) yield return rest;
     }
 
-    private static readonly string[] MergedColours = [ChartPalette.AgreeClear, ChartPalette.AgreeBlocked, ChartPalette.FalseBlock, ChartPalette.FalsePass];
+    private static readonly string[] MergedColours = [DrawingPalette.AgreeClear, DrawingPalette.AgreeBlocked, DrawingPalette.FalseBlock, DrawingPalette.FalsePass];
 
     private static string Colour(bool reference, bool model) => (reference, model) switch
     {
-        (true, true) => ChartPalette.AgreeBlocked,
-        (false, false) => ChartPalette.AgreeClear,
-        (true, false) => ChartPalette.FalsePass,
-        _ => ChartPalette.FalseBlock,
+        (true, true) => DrawingPalette.AgreeBlocked,
+        (false, false) => DrawingPalette.AgreeClear,
+        (true, false) => DrawingPalette.FalsePass,
+        _ => DrawingPalette.FalseBlock,
     };
 
     private static void Legend(SvgDocument svg, double x, double y)
     {
         (string Colour, string Label)[] items =
         [
-            (ChartPalette.AgreeBlocked, "both block"), (ChartPalette.AgreeClear, "both clear"),
-            (ChartPalette.FalsePass, "false pass: reference blocks, model lets through"), (ChartPalette.FalseBlock, "false block: model blocks, reference clear"),
+            (DrawingPalette.AgreeBlocked, "both block"), (DrawingPalette.AgreeClear, "both clear"),
+            (DrawingPalette.FalsePass, "false pass: reference blocks, model lets through"), (DrawingPalette.FalseBlock, "false block: model blocks, reference clear"),
         ];
         foreach (var (colour, label) in items)
         {
@@ -188,12 +188,12 @@ public static class FailureMapSvg
         var step = NiceStep(Math.Max(maxX - minX, maxY - minY) / 5);
         for (var t = Math.Ceiling(minX / step) * step; t <= maxX + 1e-9; t += step)
         {
-            svg.Line(X(t), py + h, X(t), py + h + 5, ChartPalette.Axis);
+            svg.Line(X(t), py + h, X(t), py + h + 5, DrawingPalette.Axis);
             svg.Text(X(t), py + h + 18, F(t, step < 1 ? 1 : 0), 10.5, "middle");
         }
         for (var t = Math.Ceiling(minY / step) * step; t <= maxY + 1e-9; t += step)
         {
-            svg.Line(px - 5, Y(t), px, Y(t), ChartPalette.Axis);
+            svg.Line(px - 5, Y(t), px, Y(t), DrawingPalette.Axis);
             svg.Text(px - 8, Y(t) + 4, F(t, step < 1 ? 1 : 0), 10.5, "end");
         }
         svg.Text(px + w / 2, py + h + 34, "x (m)", 11.5, "middle");

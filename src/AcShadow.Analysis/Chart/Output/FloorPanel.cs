@@ -35,7 +35,7 @@ internal sealed class FloorPanel
     public double X(double x) => _left + (x - _minX) * _scale;
     public double Y(double y) => _top + (_maxY - y) * _scale;
 
-    public void Frame(SvgDocument svg) => svg.Rect(_left, _top, Width, Height, "none", ChartPalette.Axis, 0.8);
+    public void Frame(SvgDocument svg) => svg.Rect(_left, _top, Width, Height, "none", DrawingPalette.Axis, 0.8);
 
     /// <summary>The outline's polygons and circles; more polygons than <paramref name="maxPolygons"/> are left out (the footprint box stands for them).</summary>
     public void Outline(SvgDocument svg, ModelOutline outline, string fill, double opacity, string stroke, int maxPolygons = 600)

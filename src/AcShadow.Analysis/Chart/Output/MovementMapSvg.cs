@@ -50,7 +50,7 @@ public static class MovementMapSvg
         var lx = 20.0;
         foreach (var verdict in MovementVerdicts.All)
         {
-            svg.Rect(lx, 72, 14, 14, ChartPalette.Verdict(verdict));
+            svg.Rect(lx, 72, 14, 14, DrawingPalette.Verdict(verdict));
             svg.Text(lx + 20, 84, MovementVerdicts.Name(verdict).Replace('_', ' '), 12);
             lx += 150;
         }
@@ -66,10 +66,10 @@ public static class MovementMapSvg
             var inState = Enumerable.Range(0, cases.Count).Where(i => cases[i].State == state).ToArray();
             var counts = MovementVerdicts.All.Skip(1).Select(v => (v, inState.Count(i => model.Verdicts[i] == v))).Where(c => c.Item2 > 0)
                 .Select(c => $"{I(c.Item2)} {MovementVerdicts.Name(c.v).Replace('_', ' ')}").ToArray();
-            svg.Text(px, py - 24, $"{model.Model} · {state}", 14, "start", "bold", ChartPalette.Model(m));
+            svg.Text(px, py - 24, $"{model.Model} · {state}", 14, "start", "bold", DrawingPalette.Model(model.Model));
             svg.Text(px, py - 8, counts.Length == 0 ? $"all {I(inState.Length)} walks agree" : string.Join(", ", counts), 11);
             panel.Outline(svg, chart.Outlines[0], "#d0d0d0", 0.5, "#909090");
-            panel.Outline(svg, chart.Outlines[m], ChartPalette.Model(m), 0.25, ChartPalette.Model(m));
+            panel.Outline(svg, chart.Outlines[m], DrawingPalette.Model(model.Model), 0.25, DrawingPalette.Model(model.Model));
             foreach (var gate in inState.Select(i => cases[i].Gate).Distinct()) panel.Gate(svg, gate, "#444444");
             // Agreement first, so the verdicts that matter are drawn on top.
             foreach (var verdict in MovementVerdicts.All)
@@ -81,7 +81,7 @@ public static class MovementMapSvg
                     panel.Segment(lines, cases[i].Walk.Start, Aim(cases[i].Walk));
                     panel.Dot(ends, model.Ends[i], 1.6);
                 }
-                var colour = ChartPalette.Verdict(verdict);
+                var colour = DrawingPalette.Verdict(verdict);
                 svg.Path(lines.ToString(), "none", colour, verdict == MovementVerdict.Agree ? 0.6 : 1.1, verdict == MovementVerdict.Agree ? 0.5 : 0.85);
                 svg.Path(ends.ToString(), colour);
             }

@@ -41,18 +41,18 @@ public static class MovementWalkSvg
         var svg = new SvgDocument(Math.Max(Left + panel.Width + 30, 1000), Top + panel.Height + 40);
         var r = c.Outcome;
         var o = MovementOutcome.Of(c.Walk, frames, c.Gate);
-        svg.Text(20, 30, $"Setup {Id(chart.SetupId)}, walk {c.Id}: {model.Model}", 17, "start", "bold", ChartPalette.Model(m));
-        svg.Text(20, 54, $"{model.Model}: {Did(o)}; verdict {MovementVerdicts.Name(verdict).Replace('_', ' ')}", 13, "start", "bold", ChartPalette.Verdict(verdict));
+        svg.Text(20, 30, $"Setup {Id(chart.SetupId)}, walk {c.Id}: {model.Model}", 17, "start", "bold", DrawingPalette.Model(model.Model));
+        svg.Text(20, 54, $"{model.Model}: {Did(o)}; verdict {MovementVerdicts.Name(verdict).Replace('_', ' ')}", 13, "start", "bold", DrawingPalette.Verdict(verdict));
         svg.Text(20, 74, $"{chart.Models[0].Model} (black): {Did(r)}", 13);
         svg.Text(20, 98, $"{I(frames.Count)} frames of {F(c.Walk.Quantum * 1000, 1)} ms at {F(new Vector2(c.Walk.Velocity.X, c.Walk.Velocity.Y).Length(), 2)} m/s; a dot per frame end (the model's wide and coloured, the reference's black over it); grey: {chart.Models[0].Model}'s outline; dashed: the gate", 11.5);
         svg.Text(20, 116, $"{model.Model}'s events: {Events(frames, c.Walk)}; {chart.Models[0].Model}'s: {Events(reference, c.Walk)}; grid 1 m, north up", 11.5);
-        for (var x = Math.Ceiling(minX); x <= maxX; x++) svg.Line(panel.X(x), panel.Y(minY), panel.X(x), panel.Y(maxY), ChartPalette.GridLine, 0.6);
-        for (var y = Math.Ceiling(minY); y <= maxY; y++) svg.Line(panel.X(minX), panel.Y(y), panel.X(maxX), panel.Y(y), ChartPalette.GridLine, 0.6);
+        for (var x = Math.Ceiling(minX); x <= maxX; x++) svg.Line(panel.X(x), panel.Y(minY), panel.X(x), panel.Y(maxY), DrawingPalette.GridLine, 0.6);
+        for (var y = Math.Ceiling(minY); y <= maxY; y++) svg.Line(panel.X(minX), panel.Y(y), panel.X(maxX), panel.Y(y), DrawingPalette.GridLine, 0.6);
         panel.Outline(svg, chart.Outlines[0], "#d0d0d0", 0.6, "#808080");
-        if (m > 0) panel.Outline(svg, chart.Outlines[m], ChartPalette.Model(m), 0.3, ChartPalette.Model(m));
+        if (m > 0) panel.Outline(svg, chart.Outlines[m], DrawingPalette.Model(model.Model), 0.3, DrawingPalette.Model(model.Model));
         panel.Gate(svg, c.Gate, "#444444");
         // The model's walk first and wide, the reference's over it, so both show where they coincide.
-        if (m > 0) Path(svg, panel, c.Walk.Start, frames, ChartPalette.Verdict(verdict), 3.2, 2.4);
+        if (m > 0) Path(svg, panel, c.Walk.Start, frames, DrawingPalette.Verdict(verdict), 3.2, 2.4);
         Path(svg, panel, c.Walk.Start, reference, "#000000", 1, 1.2);
         svg.Circle(panel.X(c.Walk.Start.X), panel.Y(c.Walk.Start.Y), 4, "#ffffff", "#000000", 1.2, "start");
         panel.Frame(svg);

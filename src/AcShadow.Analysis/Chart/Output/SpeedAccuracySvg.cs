@@ -42,21 +42,21 @@ public static class SpeedAccuracySvg
             13, "middle");
 
         // Axes, decade grid and minor ticks.
-        svg.Rect(Left, Top, plotW, plotH, "none", ChartPalette.Axis);
+        svg.Rect(Left, Top, plotW, plotH, "none", DrawingPalette.Axis);
         for (var decade = lo; decade <= hi * 1.0001; decade *= 10)
         {
             var x = X(decade);
-            svg.Line(x, Top, x, Top + plotH, ChartPalette.GridLine);
-            svg.Line(x, Top + plotH, x, Top + plotH + 6, ChartPalette.Axis);
+            svg.Line(x, Top, x, Top + plotH, DrawingPalette.GridLine);
+            svg.Line(x, Top + plotH, x, Top + plotH + 6, DrawingPalette.Axis);
             svg.Text(x, Top + plotH + 22, Time(decade), 12, "middle");
             for (var k = 2; k <= 9 && decade * k < hi; k++)
-                svg.Line(X(decade * k), Top + plotH, X(decade * k), Top + plotH + 3, ChartPalette.Axis);
+                svg.Line(X(decade * k), Top + plotH, X(decade * k), Top + plotH + 3, DrawingPalette.Axis);
         }
         for (var pct = yMin; pct <= 100.0001; pct += yStep)
         {
             var y = Y(pct);
-            svg.Line(Left, y, Left + plotW, y, ChartPalette.GridLine);
-            svg.Line(Left - 6, y, Left, y, ChartPalette.Axis);
+            svg.Line(Left, y, Left + plotW, y, DrawingPalette.GridLine);
+            svg.Line(Left - 6, y, Left, y, DrawingPalette.Axis);
             svg.Text(Left - 10, y + 4, F(pct, 0) + "%", 12, "end");
         }
         svg.Text(Left + plotW / 2, Height - 24, "median time per query (log scale; ns = nanoseconds, µs = microseconds)", 13, "middle");
@@ -65,7 +65,7 @@ public static class SpeedAccuracySvg
         for (var m = 0; m < summaries.Count; m++)
         {
             var s = summaries[m];
-            var colour = ChartPalette.Model(m);
+            var colour = DrawingPalette.Model(s.Model);
             var x = X(s.Timing.MedianNs);
             var y = Y(s.AgreementPercent);
             if (double.IsFinite(s.Timing.P10Ns) && double.IsFinite(s.Timing.P90Ns))
@@ -95,7 +95,7 @@ public static class SpeedAccuracySvg
             var s = summaries[m];
             var label = s.FalsePass > 0 ? $"{s.Model} ({I(s.FalsePass)} false passes)" : s.Model;
             var (tx, ty, anchor) = labels.Place(X(s.Timing.MedianNs), Y(s.AgreementPercent), label.Length * 7.4, 14);
-            svg.Text(tx, ty, label, 12, anchor, "bold", ChartPalette.Model(m));
+            svg.Text(tx, ty, label, 12, anchor, "bold", DrawingPalette.Model(s.Model));
         }
 
         // Legend.
@@ -107,8 +107,8 @@ public static class SpeedAccuracySvg
         {
             var s = summaries[m];
             var row = ly + 24 + m * rowHeight;
-            svg.Circle(lx + 7, row - 4, 6, ChartPalette.Model(m), "#ffffff", 1.5);
-            svg.Text(lx + 20, row, s.Model + (m == 0 ? " (reference)" : ""), 13, "start", "bold", ChartPalette.Model(m));
+            svg.Circle(lx + 7, row - 4, 6, DrawingPalette.Model(s.Model), "#ffffff", 1.5);
+            svg.Text(lx + 20, row, s.Model + (m == 0 ? " (reference)" : ""), 13, "start", "bold", DrawingPalette.Model(s.Model));
             svg.Text(lx + 20, row + 16, $"{Time(s.Timing.MedianNs)}/query, {F(s.AgreementPercent, 2)}% agree, {I(s.FalsePass)} false pass, {I(s.FalseBlock)} false block", 10.5);
             if (movement is not null && m < movement.Count)
                 svg.Text(lx + 20, row + 30, $"walks: {F(movement[m].AgreementPercent, 2)}% agree, {I(movement[m].Counts[(int)Movement.MovementVerdict.FalsePass] + movement[m].FragileFalsePass)} false pass, {Time(movement[m].NsPerTransition)}/transition", 10.5);
