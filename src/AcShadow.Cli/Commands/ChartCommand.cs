@@ -87,7 +87,7 @@ public static class ChartCommand
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
         var objectIds = order.Concat(bareGfxObjs).ToArray();
 
-        using var folder = OutputFolder.Open(outDir);
+        using var folder = OutputFolder.Open(outDir, dat);
         var cells = planned?.Scene?.Cells ?? [];
         folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null));
 
@@ -146,7 +146,11 @@ public static class ChartCommand
                         var map = files.Add(chart);
                         // The previous run's tables describe other maps: they go before the first map is
                         // replaced, so a run stopped part-way leaves no chart.csv its maps contradict.
-                        if (mapsWritten == 0) RemovePreviousTables(outDir);
+                        if (mapsWritten == 0)
+                        {
+                            RemovePreviousTables(outDir);
+                            RemoveMapsNotCharted(outDir, objectIds);
+                        }
                         bytes += folder.Write(map.RelativePath, map.Content);
                         mapsWritten++;
                         charted++;
@@ -233,6 +237,29 @@ public static class ChartCommand
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
                 throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing its failure maps: {e.Message}");
+            }
+        }
+    }
+
+    /// <summary>
+    /// An earlier run's failure maps of objects this run does not chart (an interrupted run's, or another
+    /// selection's): left, they would sit beside this run's chart.csv, which does not describe them. Only
+    /// maps that are acshadow's (their root element) are removed.
+    /// </summary>
+    private static void RemoveMapsNotCharted(string outDir, IEnumerable<uint> objectIds)
+    {
+        var charted = objectIds.Select(FailureMapSvg.FileName).ToHashSet(StringComparer.Ordinal);
+        var head = ChartFiles.Heads([0]).Single(f => f.RelativePath == FailureMapSvg.FileName(0)).Content;
+        foreach (var path in Directory.EnumerateFiles(outDir, FailureMapSvg.FilePattern).Order(StringComparer.Ordinal))
+        {
+            if (charted.Contains(Path.GetFileName(path)) || !ForeignFileGuard.IsOurs(path, head.Span)) continue;
+            try
+            {
+                File.Delete(path);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path}, a map of an object this run does not chart: {e.Message}");
             }
         }
     }

@@ -9,7 +9,9 @@ using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Json;
+using AcShadow.Files;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
@@ -65,6 +67,20 @@ public static class SceneCommand
         return command;
     }
 
+    private static bool RemovePreviousScene(string outDir)
+    {
+        var path = OutputPaths.Target(outDir, FileFormats.CompiledScene.Path);
+        try
+        {
+            if (FileKinds.Of(path) == FileKind.Regular) File.Delete(path);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing the dumps it names: {e.Message}");
+        }
+    }
+
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet)
     {
         var clock = Stopwatch.StartNew();
@@ -74,7 +90,7 @@ public static class SceneCommand
         if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
-        using var folder = OutputFolder.Open(outDir);
+        using var folder = OutputFolder.Open(outDir, dat);
 
         var subjects = new ChartSubjects(dat.Portal);
         var placed = PlacedObject.Of(scene);
@@ -98,9 +114,19 @@ public static class SceneCommand
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
         folder.RefuseForeign(files);
         long bytes = 0;
+        var sceneRemoved = false;
         foreach (var file in files)
         {
             console.Interrupted.ThrowIfCancellationRequested();
+            if (folder.IsUnchanged(file.RelativePath, file.Content.Span))
+            {
+                bytes += file.Content.Length;
+                continue;
+            }
+            // The previous compiled-scene.json names the previous dumps: it goes before the first of them is
+            // replaced, and the new one is written last (CompiledSceneFiles), so no scene ever sits beside
+            // dumps of another compile (a run stopped part-way leaves none, which view --scene says).
+            if (!sceneRemoved) sceneRemoved = RemovePreviousScene(outDir);
             bytes += folder.Write(file.RelativePath, file.Content);
         }
         folder.RequireStillInPlace();
