@@ -10,7 +10,8 @@ namespace AcShadow.Core.Batch;
 /// <summary>
 /// incremental.json (docs/batch.md): <see cref="IncrementalState"/> as canonical JSON. Reading is
 /// forgiving by design: anything unreadable gives null, and the run that asked
-/// for it simply exports everything.
+/// for it simply exports everything. A state naming a file outside the folder (an absolute path, "..")
+/// is unreadable too: it is data, and reuse never reaches past the folder on its word.
 /// </summary>
 public static class IncrementalStateFile
 {
@@ -37,7 +38,7 @@ public static class IncrementalStateFile
                 s.GetProperty("parts").EnumerateArray().Select(Id).ToArray(),
                 s.GetProperty("diagnostics").GetInt32(),
                 s.GetProperty("files").EnumerateArray().Select(f => new FileEntry(
-                    f.GetProperty("path").GetString()!,
+                    Inside(f.GetProperty("path").GetString()),
                     Kind(f.GetProperty("kind").GetString()),
                     Id(f.GetProperty("id")),
                     f.GetProperty("shapes").GetInt32(),
@@ -51,6 +52,9 @@ public static class IncrementalStateFile
             return null;
         }
     }
+
+    private static string Inside(string? path) =>
+        RelativeOutputPath.StaysInside(path) ? path! : throw new FormatException($"not a path inside the folder: {path}");
 
     private static uint Id(JsonElement e) =>
         JsonIds.TryParse(e.GetString(), out var id) ? id : throw new FormatException($"not an id: {e}");
