@@ -166,7 +166,7 @@ public static class BatchCommand
             $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s){(result.Cells > 0 ? $", {result.Cells} cell(s)" : "")}"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}{(removed > 0 ? $", {removed} the previous run wrote removed (this run does not write them)" : "")}, index {Path.Combine(outDir, FileFormats.Index.Path)}"));
+            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}{(removed > 0 ? $", {removed} removed (the previous run wrote them; this run does not)" : "")}, index {Path.Combine(outDir, FileFormats.Index.Path)}"));
         foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
             o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}{(group.Count() > IdSummary.Shown ? " (all in index.json's skipped)" : "")}");
         if (result.Diagnostics.Diagnostics > 0)
