@@ -81,6 +81,8 @@ public sealed class HostileFolderTests
     [InlineData("cells", "batch --landblock 0xA9B4")]
     [InlineData("setups", "dump --setup 0x020019FF")]
     [InlineData("gfxobjs", "dump --setup 0x020019FF")]
+    [InlineData("cells", "dump --cell 0xA9B40100")]
+    [InlineData("gfxobjs", "scene --landblock 0xA9B4 --quiet")]
     public void A_link_where_an_output_subfolder_belongs_is_refused_and_nothing_lands_outside(string sub, string command)
     {
         using var root = new TempDir();
@@ -254,5 +256,84 @@ public sealed class HostileFolderTests
         Assert.True(run.ExitCode == 6, $"exit {run.ExitCode}\n{run.Out}\n{run.Error}");
         Assert.Contains($"--out: {dat} is a dat this run reads: acshadow never writes over its input", run.Error);
         Assert.Equal(before, Sha(File.ReadAllBytes(dat)));
+    }
+
+    // Item 3, at the reader: a state naming any path that could leave the folder is no state at all.
+    [Theory]
+    [InlineData("../victim.txt")]
+    [InlineData("/etc/hostname")]
+    [InlineData("setups/../../x.json")]
+    [InlineData("setups//x.json")]
+    [InlineData("setups\\x.json")]
+    [InlineData("C:x.json")]
+    public void An_incremental_state_naming_a_path_that_leaves_the_folder_is_unreadable(string path)
+    {
+        using var dir = new TempDir();
+        Assert.Equal(0, Batch(dir.Path, "--doors", "--incremental").ExitCode);
+        var text = File.ReadAllText(Path.Combine(dir.Path, "incremental.json"));
+        Assert.NotNull(AcShadow.Core.Batch.IncrementalStateFile.TryRead(Encoding.UTF8.GetBytes(text)));
+        var hostile = text.Replace($"\"path\": \"{Door}\"", $"\"path\": {JsonSerializer.Serialize(path)}");
+        Assert.NotEqual(text, hostile);
+        Assert.Null(AcShadow.Core.Batch.IncrementalStateFile.TryRead(Encoding.UTF8.GetBytes(hostile)));
+    }
+
+    // Item 5: an index.json that is a link is not read through.
+    [Fact]
+    public void Verify_refuses_an_index_that_is_a_link()
+    {
+        using var root = new TempDir();
+        var outDir = Path.Combine(root.Path, "out");
+        Assert.Equal(0, Batch(outDir, "--doors").ExitCode);
+        var elsewhere = Path.Combine(root.Path, "index.json");
+        File.Move(Path.Combine(outDir, "index.json"), elsewhere);
+        File.CreateSymbolicLink(Path.Combine(outDir, "index.json"), elsewhere);
+
+        var run = CliRun.Of("verify", "--fixtures", outDir);
+
+        Assert.Equal(2, run.ExitCode);
+        Assert.Contains($"--fixtures: {Path.Combine(outDir, "index.json")} is a symbolic link (to {elsewhere}): verify reads no file through a link", run.Error);
+    }
+
+    // Item 5: the error line escapes what a path carries, as verify's report does.
+    [Fact]
+    public void An_error_line_escapes_control_characters_in_a_path()
+    {
+        using var root = new TempDir();
+        var outPath = Path.Combine(root.Path, "red\u001b[31m");
+        File.WriteAllText(outPath, "a file where the folder belongs\n");
+
+        var run = CliRun.Of("batch", "--doors", "--out", outPath);
+
+        Assert.Equal(6, run.ExitCode);
+        Assert.DoesNotContain('\u001b', run.Error);
+        Assert.Contains("red\\x1B[31m is a file", run.Error);
+    }
+
+    // Item 6, the order itself: the file that names the dumps is the last one written.
+    [Fact]
+    public void The_compiled_scene_is_written_after_every_dump_it_names()
+    {
+        var files = AcShadow.Analysis.Compile.CompiledSceneFiles.Render(Scenes.SceneCompileTests.Exact.Value,
+            id => Chart.SampleChart.Subjects.Value.GfxObj(id) is { } g ? AcShadow.Core.Bsp.BspExtractor.Extract(g) : null);
+        Assert.Contains(files, f => f.RelativePath.EndsWith(".bsp.json", StringComparison.Ordinal));
+        Assert.Equal("compiled-scene.json", files[^1].RelativePath);
+    }
+
+    // Item 11: an index written before dats were hashed still verifies against its dat (compared by size and iteration).
+    [Fact]
+    public void An_index_without_the_dats_hash_still_verifies()
+    {
+        using var dir = new TempDir();
+        Assert.Equal(0, Batch(dir.Path, "--doors").ExitCode);
+        var index = Path.Combine(dir.Path, "index.json");
+        var text = File.ReadAllText(index);
+        var at = text.IndexOf(",\n      \"sha256\": \"", StringComparison.Ordinal);
+        Assert.True(at > 0);
+        File.WriteAllText(index, text[..at] + text[text.IndexOf('"', at + ",\n      \"sha256\": \"".Length)..][1..]);
+        Assert.DoesNotContain("\"sha256\": \"" + Sha(SampleDat.PortalBytes), File.ReadAllText(index));
+
+        var run = CliRun.Of("verify", "--fixtures", dir.Path);
+
+        Assert.True(run.ExitCode == 0, run.Out + run.Error);
     }
 }
