@@ -1,5 +1,4 @@
 using AcShadow.Cli.Infrastructure;
-using AcShadow.Core.Formats;
 using AcShadow.Files;
 using AcShadow.Fixtures.Formats;
 
@@ -20,7 +19,9 @@ public static class OutputPaths
     /// </summary>
     public static string Target(string root, string relativePath)
     {
-        if (!RelativeOutputPath.StaysInside(relativePath))
+        // By spelling: the paths a run makes are plain names under the folder (a report's own name may hold
+        // any character a file name may, ':' included); none is rooted or climbs out.
+        if (Path.IsPathRooted(relativePath) || relativePath.Split('/', Path.DirectorySeparatorChar).Contains(".."))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {relativePath} is not a path inside {root}: acshadow writes only inside --out");
         if (FolderLinks.FirstDetour(root, relativePath) is { } detour)
             throw new CliException(ExitCodes.OutputFailed, Detour(detour.Path, detour.Kind));

@@ -19,6 +19,14 @@ public sealed class HostileFolderTests
 
     private static CliRun Batch(string outDir, params string[] args) => CliRun.Of(["batch", "--out", outDir, "--quiet", .. args]);
 
+    /// <summary>A `batch --doors` in ROOT/out (so ROOT has room for files outside the folder); the folder's path.</summary>
+    private static string DoorsBatchIn(TempDir root)
+    {
+        var outDir = Path.Combine(root.Path, "out");
+        Assert.Equal(0, Batch(outDir, "--doors").ExitCode);
+        return outDir;
+    }
+
     private static string[] FilesUnder(string folder) =>
         Directory.Exists(folder) ? Directory.GetFiles(folder, "*", SearchOption.AllDirectories) : [];
 
@@ -107,8 +115,7 @@ public sealed class HostileFolderTests
     public void Verify_reports_a_linked_fixture_as_a_link_and_never_prints_what_it_leads_to()
     {
         using var root = new TempDir();
-        var outDir = Path.Combine(root.Path, "out");
-        Assert.Equal(0, Batch(outDir, "--doors").ExitCode);
+        var outDir = DoorsBatchIn(root);
         var secrets = Path.Combine(root.Path, "credentials.json");
         File.WriteAllText(secrets, "{\n  \"format\": \"acshadow.shadow/2\",\n  \"apiToken\": \"tok-3141592653\",\n  \"password\": \"hunter2-secret\"\n}\n");
         File.Delete(Path.Combine(outDir, Door));
@@ -127,8 +134,7 @@ public sealed class HostileFolderTests
     public void Verify_names_a_folder_link_loop_once_and_does_not_walk_it()
     {
         using var root = new TempDir();
-        var outDir = Path.Combine(root.Path, "out");
-        Assert.Equal(0, Batch(outDir, "--doors").ExitCode);
+        var outDir = DoorsBatchIn(root);
         Directory.CreateSymbolicLink(Path.Combine(outDir, "gfxobjs", "loop"), "..");
 
         var run = CliRun.Of("verify", "--fixtures", outDir);
@@ -143,8 +149,7 @@ public sealed class HostileFolderTests
     public void Verify_escapes_control_characters_in_the_names_it_prints()
     {
         using var root = new TempDir();
-        var outDir = Path.Combine(root.Path, "out");
-        Assert.Equal(0, Batch(outDir, "--doors").ExitCode);
+        var outDir = DoorsBatchIn(root);
         File.WriteAllText(Path.Combine(outDir, "setups", "red\u001b[31m.json"), "{}\n");
         File.WriteAllText(Path.Combine(outDir, "setups", "two\nlines.json"), "{}\n");
 
@@ -282,8 +287,7 @@ public sealed class HostileFolderTests
     public void Verify_refuses_an_index_that_is_a_link()
     {
         using var root = new TempDir();
-        var outDir = Path.Combine(root.Path, "out");
-        Assert.Equal(0, Batch(outDir, "--doors").ExitCode);
+        var outDir = DoorsBatchIn(root);
         var elsewhere = Path.Combine(root.Path, "index.json");
         File.Move(Path.Combine(outDir, "index.json"), elsewhere);
         File.CreateSymbolicLink(Path.Combine(outDir, "index.json"), elsewhere);
@@ -335,5 +339,16 @@ public sealed class HostileFolderTests
         var run = CliRun.Of("verify", "--fixtures", dir.Path);
 
         Assert.True(run.ExitCode == 0, run.Out + run.Error);
+    }
+
+    // The path rule refuses what leaves the folder, not what a file name may hold: a report named with a colon is written.
+    [Fact]
+    public void A_report_whose_name_holds_a_colon_is_still_written()
+    {
+        using var dir = new TempDir();
+        var report = Path.Combine(dir.Path, "audit:doors.csv");
+        var run = CliRun.Of("audit", "--doors", "--format", "csv", "--out", report);
+        Assert.True(run.ExitCode == 0, run.Error);
+        Assert.True(new FileInfo(report).Length > 0);
     }
 }
