@@ -263,6 +263,23 @@ public sealed class HostileFolderTests
         Assert.Equal(before, Sha(File.ReadAllBytes(dat)));
     }
 
+    [Fact]
+    public void A_landblock_batch_never_writes_over_the_cell_dat_it_reads()
+    {
+        using var dats = SampleDat.WriteToTempFolder();
+        using var dir = new TempDir();
+        var portal = Path.Combine(dats.Path, "client_portal.dat");
+        Assert.Equal(0, Batch(dir.Path, "--landblock", "0xA9B4", "--dat", portal, "--cell-dat", dats.Path).ExitCode);
+        var cellDat = Path.Combine(dir.Path, "cells", "0xA9B40100.cell.json");
+        File.WriteAllBytes(cellDat, SampleDat.CellBytes!);
+
+        var run = Batch(dir.Path, "--landblock", "0xA9B4", "--dat", portal, "--cell-dat", cellDat);
+
+        Assert.True(run.ExitCode == 6, $"exit {run.ExitCode}\n{run.Out}\n{run.Error}");
+        Assert.Contains($"--out: {cellDat} is a dat this run reads", run.Error);
+        Assert.Equal(Sha(SampleDat.CellBytes!), Sha(File.ReadAllBytes(cellDat)));
+    }
+
     // Item 3, at the reader: a state naming any path that could leave the folder is no state at all.
     [Theory]
     [InlineData("../victim.txt")]
