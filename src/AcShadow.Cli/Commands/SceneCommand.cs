@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using System.Text.Json;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Compile;
 using AcShadow.Cli.Infrastructure;
@@ -8,6 +9,7 @@ using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Files;
 using AcShadow.Fixtures.Bsp;
@@ -67,6 +69,55 @@ public static class SceneCommand
         return command;
     }
 
+    /// <summary>The BSP dumps a compiled-scene.json names (its "file" values), when it is a regular file that reads as JSON; else none.</summary>
+    private static IReadOnlyList<string> DumpsNamedBy(string scenePath)
+    {
+        if (FileKinds.Of(scenePath) != FileKind.Regular) return [];
+        try
+        {
+            using var doc = JsonDocument.Parse(File.ReadAllBytes(scenePath));
+            var named = new List<string>();
+            void Walk(JsonElement e)
+            {
+                if (e.ValueKind == JsonValueKind.Object)
+                    foreach (var p in e.EnumerateObject())
+                        if (p.Name == "file" && p.Value.ValueKind == JsonValueKind.String) named.Add(p.Value.GetString()!);
+                        else Walk(p.Value);
+                else if (e.ValueKind == JsonValueKind.Array)
+                    foreach (var item in e.EnumerateArray()) Walk(item);
+            }
+            Walk(doc.RootElement);
+            return [.. named.Where(f => RelativeOutputPath.StaysInside(f) && f.EndsWith(".bsp.json", StringComparison.Ordinal)).Distinct()];
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException or InvalidOperationException)
+        {
+            return [];
+        }
+    }
+
+    /// <summary>
+    /// Removes the dumps the previous compiled-scene.json named that this run does not write (an object now
+    /// modelled by a cheaper model needs no dump); <paramref name="beforeFirst"/> runs before the first removal.
+    /// </summary>
+    private static void RemoveDumpsNoLongerNamed(OutputFolder folder, IReadOnlyList<string> previous, IReadOnlyList<OutputFile> files, Action beforeFirst)
+    {
+        var written = files.Select(f => f.RelativePath).ToHashSet(StringComparer.Ordinal);
+        foreach (var relative in previous.Where(p => !written.Contains(p)))
+        {
+            var path = OutputPaths.Target(folder.Root, relative);
+            if (FileKinds.Of(path) != FileKind.Regular) continue;
+            beforeFirst();
+            try
+            {
+                File.Delete(path);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                throw new CliException(ExitCodes.OutputFailed, $"cannot remove {path}, a dump the previous compile named and this one does not: {e.Message}");
+            }
+        }
+    }
+
     private static bool RemovePreviousScene(string outDir)
     {
         var path = OutputPaths.Target(outDir, FileFormats.CompiledScene.Path);
@@ -113,11 +164,15 @@ public static class SceneCommand
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
         folder.RefuseForeign(files);
+        var previousDumps = DumpsNamedBy(Path.Combine(outDir, FileFormats.CompiledScene.Path));
         long bytes = 0;
         var sceneRemoved = false;
         foreach (var file in files)
         {
             console.Interrupted.ThrowIfCancellationRequested();
+            // Before the new scene: the dumps only the previous one named go, so the folder holds one compile.
+            if (file.RelativePath == FileFormats.CompiledScene.Path)
+                RemoveDumpsNoLongerNamed(folder, previousDumps, files, () => sceneRemoved = sceneRemoved || RemovePreviousScene(outDir));
             if (folder.IsUnchanged(file.RelativePath, file.Content.Span))
             {
                 bytes += file.Content.Length;

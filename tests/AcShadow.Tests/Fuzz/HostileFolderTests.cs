@@ -183,6 +183,25 @@ public sealed class HostileFolderTests
             "the failed re-run left its own compiled-scene.json, naming dumps it never wrote");
     }
 
+    // Item 7, for scene: a re-run that models more objects cheaply left the dumps only the previous compile named.
+    [Fact]
+    public void A_scene_rerun_removes_the_dumps_its_compile_no_longer_names()
+    {
+        using var dir = new TempDir();
+        Assert.Equal(0, CliRun.Of("scene", "--landblock", "0xA9B4", "--out", dir.Path, "--quiet").ExitCode);
+        string[] Dumps() => [.. Directory.GetFiles(Path.Combine(dir.Path, "gfxobjs"), "*.bsp.json").Select(f => "gfxobjs/" + Path.GetFileName(f)).Order(StringComparer.Ordinal)];
+        string[] Named() => [.. Dumps().Where(File.ReadAllText(Path.Combine(dir.Path, "compiled-scene.json")).Contains)];
+        var first = Dumps();
+        Assert.NotEmpty(first);
+
+        // Every false block tolerated: the objects take cheaper models, which need no dump.
+        var rerun = CliRun.Of("scene", "--landblock", "0xA9B4", "--out", dir.Path, "--quiet", "--tolerance", "100");
+
+        Assert.Equal(0, rerun.ExitCode);
+        Assert.NotEqual(first, Dumps());
+        Assert.Equal(Named(), Dumps());
+    }
+
     // Item 7: a --no-cells re-run left the first run's cells (and the objects only they placed), and verify failed.
     [Fact]
     public void A_batch_rerun_removes_the_files_it_no_longer_writes()
