@@ -141,7 +141,7 @@ public static class BatchCommand
         folder.RequireStillInPlace();
         // What the previous run wrote and this one did not (cells after --no-cells, Setups no longer chosen)
         // goes before the new index, so the index never sits beside files no run of its inputs writes.
-        var removed = RemoveStale(outDir, previous, result.Files, () =>
+        var removed = RemoveStale(folder, previous, result.Files, () =>
         {
             if (Interlocked.Exchange(ref indexRemoved, 1) == 0) RemoveIndex(outDir);
         });
@@ -234,26 +234,11 @@ public static class BatchCommand
     /// Removes the files the previous run's index listed that this run did not write (only regular files at
     /// paths inside the folder); <paramref name="beforeFirst"/> runs before the first removal. The count removed.
     /// </summary>
-    private static int RemoveStale(string outDir, IReadOnlySet<string> previous, IReadOnlyList<FileEntry> written, Action beforeFirst)
+    private static int RemoveStale(OutputFolder folder, IReadOnlySet<string> previous, IReadOnlyList<FileEntry> written, Action beforeFirst)
     {
         var kept = written.Select(f => f.RelativePath).Append(FileFormats.Index.Path).Append(IncrementalState.Path).ToHashSet(StringComparer.Ordinal);
-        var removed = 0;
-        foreach (var relative in previous.Where(p => !kept.Contains(p) && RelativeOutputPath.StaysInside(p)).Order(StringComparer.Ordinal))
-        {
-            var path = OutputPaths.Target(outDir, relative);
-            if (FileKinds.Of(path) != FileKind.Regular) continue;
-            beforeFirst();
-            try
-            {
-                File.Delete(path);
-            }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-            {
-                throw new CliException(ExitCodes.OutputFailed, $"cannot remove {path}, which the previous run wrote and this one does not: {e.Message}");
-            }
-            removed++;
-        }
-        return removed;
+        return previous.Where(p => !kept.Contains(p) && RelativeOutputPath.StaysInside(p)).Order(StringComparer.Ordinal)
+            .Count(relative => folder.RemoveEarlier(relative, "the previous run wrote it and this one does not", beforeFirst));
     }
 
     private static void RemoveIndex(string outDir)

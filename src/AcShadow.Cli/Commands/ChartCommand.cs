@@ -149,7 +149,7 @@ public static class ChartCommand
                         if (mapsWritten == 0)
                         {
                             RemovePreviousTables(outDir);
-                            RemoveMapsNotCharted(outDir, objectIds);
+                            RemoveMapsNotCharted(folder, objectIds);
                         }
                         bytes += folder.Write(map.RelativePath, map.Content);
                         mapsWritten++;
@@ -246,22 +246,13 @@ public static class ChartCommand
     /// selection's): left, they would sit beside this run's chart.csv, which does not describe them. Only
     /// maps that are acshadow's (their root element) are removed.
     /// </summary>
-    private static void RemoveMapsNotCharted(string outDir, IEnumerable<uint> objectIds)
+    private static void RemoveMapsNotCharted(OutputFolder folder, IEnumerable<uint> objectIds)
     {
         var charted = objectIds.Select(FailureMapSvg.FileName).ToHashSet(StringComparer.Ordinal);
         var head = ChartFiles.Heads([0]).Single(f => f.RelativePath == FailureMapSvg.FileName(0)).Content;
-        foreach (var path in Directory.EnumerateFiles(outDir, FailureMapSvg.FilePattern).Order(StringComparer.Ordinal))
-        {
-            if (charted.Contains(Path.GetFileName(path)) || !ForeignFileGuard.IsOurs(path, head.Span)) continue;
-            try
-            {
-                File.Delete(path);
-            }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-            {
-                throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path}, a map of an object this run does not chart: {e.Message}");
-            }
-        }
+        foreach (var path in Directory.EnumerateFiles(folder.Root, FailureMapSvg.FilePattern).Order(StringComparer.Ordinal))
+            if (!charted.Contains(Path.GetFileName(path)) && ForeignFileGuard.IsOurs(path, head.Span))
+                folder.RemoveEarlier(Path.GetFileName(path), "an earlier run's map of an object this run does not chart");
     }
 
     private static string F(float v) => v.ToString(CultureInfo.InvariantCulture);

@@ -103,33 +103,7 @@ public static class SceneCommand
     {
         var written = files.Select(f => f.RelativePath).ToHashSet(StringComparer.Ordinal);
         foreach (var relative in previous.Where(p => !written.Contains(p)))
-        {
-            var path = OutputPaths.Target(folder.Root, relative);
-            if (FileKinds.Of(path) != FileKind.Regular) continue;
-            beforeFirst();
-            try
-            {
-                File.Delete(path);
-            }
-            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-            {
-                throw new CliException(ExitCodes.OutputFailed, $"cannot remove {path}, a dump the previous compile named and this one does not: {e.Message}");
-            }
-        }
-    }
-
-    private static bool RemovePreviousScene(string outDir)
-    {
-        var path = OutputPaths.Target(outDir, FileFormats.CompiledScene.Path);
-        try
-        {
-            if (FileKinds.Of(path) == FileKind.Regular) File.Delete(path);
-            return true;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing the dumps it names: {e.Message}");
-        }
+            folder.RemoveEarlier(relative, "a dump the previous compile named and this one does not", beforeFirst);
     }
 
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet)
@@ -167,12 +141,17 @@ public static class SceneCommand
         var previousDumps = DumpsNamedBy(Path.Combine(outDir, FileFormats.CompiledScene.Path));
         long bytes = 0;
         var sceneRemoved = false;
+        void RemovePreviousScene()
+        {
+            if (!sceneRemoved) folder.RemoveEarlier(FileFormats.CompiledScene.Path, "the previous compile's scene, which names the dumps this run replaces");
+            sceneRemoved = true;
+        }
         foreach (var file in files)
         {
             console.Interrupted.ThrowIfCancellationRequested();
             // Before the new scene: the dumps only the previous one named go, so the folder holds one compile.
             if (file.RelativePath == FileFormats.CompiledScene.Path)
-                RemoveDumpsNoLongerNamed(folder, previousDumps, files, () => sceneRemoved = sceneRemoved || RemovePreviousScene(outDir));
+                RemoveDumpsNoLongerNamed(folder, previousDumps, files, RemovePreviousScene);
             if (folder.IsUnchanged(file.RelativePath, file.Content.Span))
             {
                 bytes += file.Content.Length;
@@ -181,7 +160,7 @@ public static class SceneCommand
             // The previous compiled-scene.json names the previous dumps: it goes before the first of them is
             // replaced, and the new one is written last (CompiledSceneFiles), so no scene ever sits beside
             // dumps of another compile (a run stopped part-way leaves none, which view --scene says).
-            if (!sceneRemoved) sceneRemoved = RemovePreviousScene(outDir);
+            RemovePreviousScene();
             bytes += folder.Write(file.RelativePath, file.Content);
         }
         folder.RequireStillInPlace();

@@ -1,5 +1,6 @@
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Formats;
+using AcShadow.Files;
 
 namespace AcShadow.Cli.Output;
 
@@ -121,6 +122,27 @@ public sealed class OutputFolder : IDisposable
             bytes += content.Length;
         }
         return bytes;
+    }
+
+    /// <summary>
+    /// Removes a file an earlier run wrote that this run does not (<paramref name="because"/> says why it
+    /// goes, for the error line): only a regular file inside the folder; a link, a folder or nothing there is
+    /// left alone. <paramref name="beforeRemoving"/> runs first. Whether a file was removed.
+    /// </summary>
+    public bool RemoveEarlier(string relativePath, string because, Action? beforeRemoving = null)
+    {
+        var path = OutputPaths.Target(Root, relativePath);
+        if (FileKinds.Of(path) != FileKind.Regular) return false;
+        beforeRemoving?.Invoke();
+        try
+        {
+            File.Delete(path);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"cannot remove {path} ({because}): {e.Message}");
+        }
     }
 
     /// <summary>Fails (exit 6) when the folder at the path is no longer the one this run locked and wrote into.</summary>
