@@ -53,6 +53,41 @@ public sealed class HostileFolderTests
         Assert.Equal(Sha(File.ReadAllBytes(path)), entry.GetProperty("sha256").GetString());
     }
 
+    // Item 2, the state itself: a hand-edited count in incremental.json went into index.json unchecked.
+    [Fact]
+    public void An_incremental_state_edited_by_hand_is_not_trusted()
+    {
+        using var dir = new TempDir();
+        Assert.Equal(0, Batch(dir.Path, "--all", "--incremental").ExitCode);
+        var state = Path.Combine(dir.Path, "incremental.json");
+        var text = File.ReadAllText(state);
+        var at = text.IndexOf($"\"path\": \"{Door}\"", StringComparison.Ordinal);
+        var shapes = text.IndexOf("\"shapes\": ", at, StringComparison.Ordinal) + "\"shapes\": ".Length;
+        File.WriteAllText(state, text[..shapes] + "9" + text[shapes..]);
+
+        var run = Batch(dir.Path, "--all", "--incremental");
+
+        Assert.Equal(0, run.ExitCode);
+        var verify = CliRun.Of("verify", "--fixtures", dir.Path);
+        Assert.True(verify.ExitCode == 0, verify.Out + verify.Error);
+    }
+
+    // Found by the fuzz campaign's incremental re-run: a state with no Setups is written on one line, and the
+    // next --incremental run took that line for another program's file and refused the folder (exit 6).
+    [Fact]
+    public void An_incremental_state_of_a_run_that_exported_nothing_is_replaced_by_the_next_run()
+    {
+        using var dir = new TempDir();
+        using var ids = new TempDir();
+        var list = Path.Combine(ids.Path, "ids.txt");
+        File.WriteAllText(list, "0x0200FFF0\n"); // not in the sample: skipped, so no Setup is exported
+        Assert.Equal(0, Batch(dir.Path, "--setups", list, "--incremental").ExitCode);
+
+        var rerun = Batch(dir.Path, "--setups", list, "--incremental");
+
+        Assert.True(rerun.ExitCode == 0, rerun.Error);
+    }
+
     // Item 3: incremental.json named files outside the folder for a Setup, which was then "reused".
     [Theory]
     [InlineData("relative")]
@@ -311,11 +346,16 @@ public sealed class HostileFolderTests
     {
         using var dir = new TempDir();
         Assert.Equal(0, Batch(dir.Path, "--doors", "--incremental").ExitCode);
-        var text = File.ReadAllText(Path.Combine(dir.Path, "incremental.json"));
-        Assert.NotNull(AcShadow.Core.Batch.IncrementalStateFile.TryRead(Encoding.UTF8.GetBytes(text)));
-        var hostile = text.Replace($"\"path\": \"{Door}\"", $"\"path\": {JsonSerializer.Serialize(path)}");
-        Assert.NotEqual(text, hostile);
-        Assert.Null(AcShadow.Core.Batch.IncrementalStateFile.TryRead(Encoding.UTF8.GetBytes(hostile)));
+        var state = AcShadow.Core.Batch.IncrementalStateFile.TryRead(File.ReadAllBytes(Path.Combine(dir.Path, "incremental.json")));
+        Assert.NotNull(state);
+        // Written by the writer itself, so its own SHA-256 holds: only the path is wrong.
+        var hostile = state with
+        {
+            Setups = [.. state.Setups.Select(s => s with { Files = [.. s.Files.Select(f => f.RelativePath == Door ? f with { RelativePath = path } : f)] })],
+        };
+        Assert.NotNull(AcShadow.Core.Batch.IncrementalStateFile.TryRead(AcShadow.Core.Batch.IncrementalStateFile.Write(state)));
+        Assert.Contains(JsonSerializer.Serialize(path), Encoding.UTF8.GetString(AcShadow.Core.Batch.IncrementalStateFile.Write(hostile)));
+        Assert.Null(AcShadow.Core.Batch.IncrementalStateFile.TryRead(AcShadow.Core.Batch.IncrementalStateFile.Write(hostile)));
     }
 
     // Item 5: an index.json that is a link is not read through.
