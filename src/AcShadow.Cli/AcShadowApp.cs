@@ -106,7 +106,10 @@ public static class AcShadowApp
     // EMFILE (the process's limit) and ENFILE (the system's): .NET gives an I/O error the errno as its HResult on Unix; both are 24 and 23 on Linux and macOS.
     private static bool DescriptorsExhausted(Exception e) => e is IOException { HResult: 24 or 23 } && !OperatingSystem.IsWindows();
 
-    /// <summary>Every error is one line, even when an exception's message (or a path in it) holds line breaks.</summary>
+    /// <summary>
+    /// Every error is one line, even when an exception's message (or a path in it) holds line breaks; any
+    /// other control character a path carries (ESC) is written as an escape, never sent to the terminal.
+    /// </summary>
     private static string OneLine(string message) =>
-        string.Join(' ', message.Split(['\r', '\n'], StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries));
+        PrintableText.Escape(string.Join(' ', message.Split(['\r', '\n'], StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)));
 }

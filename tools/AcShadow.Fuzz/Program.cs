@@ -5,7 +5,7 @@ namespace AcShadow.Fuzz;
 /// <summary>
 /// `acshadow-fuzz [--seed N] [--cases N] [--start N] [--deep-every N] [--time-limit SECONDS] [--memory-limit MIB] [--save DIR] [--trace FILE]`:
 /// runs a campaign on the built-in sample and prints cases/second, time per command, failures and the
-/// slowest case. Every case runs dump and batch; every Nth (--deep-every, default 1: all) also chart and verify. With
+/// slowest case. Every case runs dump and batch; every Nth (--deep-every, default 1: all) also chart and verify, and an incremental re-run that must repair the damaged fixture. With
 /// --save, each kind of failure is minimised and saved there as a reproducer; with --trace, the index of the
 /// case about to run is written to FILE (what a crash of the whole process leaves). Exit 0 when nothing failed.
 /// </summary>

@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using System.Security.Cryptography;
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Cli.Output;
 using AcShadow.Cli.Terminal;
@@ -77,8 +78,8 @@ public static class BatchCommand
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
         var movement = MoveCommand.Selection(movementIds, moverId, dat);
-        using var folder = OutputFolder.Open(outDir);
-        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null ? null : dat.Cell?.Info, options.Policy, options.EntityScale, selection)
+        using var folder = OutputFolder.Open(outDir, dat);
+        var inputs = new BatchInputs(OpenedDat.Hashed(dat.Portal), selection.Landblock is null || dat.Cell is null ? null : OpenedDat.Hashed(dat.Cell), options.Policy, options.EntityScale, selection)
         {
             Formats = formats,
             Pose = options.Pose,
@@ -86,12 +87,12 @@ public static class BatchCommand
             MotionTable = options.MotionTable,
             Movement = movement,
         };
-        RefuseForeignFiles(folder, plan, formats);
+        var previous = RefuseForeignFiles(folder, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         var source = dat.PortalWorkingSet();
         // Fingerprints (every object read again and hashed) only when the state they feed is written.
         var reuse = incremental
-            ? new BatchReuse(ReadState(outDir), IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HasSize(outDir, file))
+            ? new BatchReuse(ReadState(outDir), IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HoldsRecordedBytes(outDir, file))
             : null;
 
         int filesWritten = 0, unchanged = 0, indexRemoved = 0;
@@ -138,6 +139,12 @@ public static class BatchCommand
             progress.Finish();
         }
         folder.RequireStillInPlace();
+        // What the previous run wrote and this one did not (cells after --no-cells, Setups no longer chosen)
+        // goes before the new index, so the index never sits beside files no run of its inputs writes.
+        var removed = RemoveStale(folder, previous, result.Files, () =>
+        {
+            if (Interlocked.Exchange(ref indexRemoved, 1) == 0) RemoveIndex(outDir);
+        });
         // The state for the next --incremental run, then index.json, last: an index on disk only ever
         // describes files already written.
         if (incremental) Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
@@ -159,7 +166,7 @@ public static class BatchCommand
             $"{result.SetupsWritten} setup(s), {result.BspDumps} GfxObj BSP dump(s), {result.Scenes} scene(s){(result.Cells > 0 ? $", {result.Cells} cell(s)" : "")}"));
         var reused = incremental ? $", {result.SetupsReused} setup(s) unchanged in the dat and not re-exported" : "";
         o.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}, index {Path.Combine(outDir, FileFormats.Index.Path)}"));
+            $"  files: {filesWritten} written ({written} bytes){(incremental || unchanged > 0 ? $", {unchanged} unchanged and left alone" : "")}{reused}{(removed > 0 ? $", {removed} removed (the previous run wrote them; this run does not)" : "")}, index {Path.Combine(outDir, FileFormats.Index.Path)}"));
         foreach (var group in result.Skipped.GroupBy(s => (s.Reason, From: string.Join(", ", s.From.Names()))))
             o.WriteLine($"  skipped {group.Count()} ({group.Key.Reason}; from {group.Key.From}): {IdSummary.Of(group.Select(s => s.Id).ToArray())}{(group.Count() > IdSummary.Shown ? " (all in index.json's skipped)" : "")}");
         if (result.Diagnostics.Diagnostics > 0)
@@ -175,18 +182,24 @@ public static class BatchCommand
     /// shadow files, gfxobjs/, scene.json, cells/, index.json, incremental.json) that the folder's index.json does
     /// not list must carry the signature of the acshadow format its name stands for.
     /// </summary>
-    private static void RefuseForeignFiles(OutputFolder folder, BatchPlan plan, OutputFormats formats)
+    /// <returns>The files the folder's index.json lists (the previous run's).</returns>
+    private static IReadOnlySet<string> RefuseForeignFiles(OutputFolder folder, BatchPlan plan, OutputFormats formats)
     {
         var outDir = folder.Root;
         var listed = IndexListing.Read(outDir);
         var candidates = new List<OutputFile>();
+        var considered = new List<string>();
         // A file the index lists is ours even when damaged; anything but a regular file never is.
-        bool NeedsCheck(string relative) => FileKinds.Of(OutputPaths.Target(outDir, relative)) switch
+        bool NeedsCheck(string relative)
         {
-            FileKind.Missing => false,
-            FileKind.Regular => !listed.Contains(relative),
-            _ => true,
-        };
+            considered.Add(relative);
+            return FileKinds.Of(OutputPaths.Target(outDir, relative)) switch
+            {
+                FileKind.Missing => false,
+                FileKind.Regular => !listed.Contains(relative),
+                _ => true,
+            };
+        }
         void Consider(string relative, string format)
         {
             if (NeedsCheck(relative)) candidates.Add(new OutputFile(relative, ForeignFileGuard.JsonHead(format).ToArray()));
@@ -211,7 +224,21 @@ public static class BatchCommand
         }
         Consider(FileFormats.Index.Path, FileFormats.Index.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
+        // A listed file is replaced unread: one that is the dat this run reads is refused first.
+        folder.RefuseInputs(considered, "; nothing was written");
         folder.RefuseForeign(candidates, listed);
+        return listed;
+    }
+
+    /// <summary>
+    /// Removes the files the previous run's index listed that this run did not write (only regular files at
+    /// paths inside the folder); <paramref name="beforeFirst"/> runs before the first removal. The count removed.
+    /// </summary>
+    private static int RemoveStale(OutputFolder folder, IReadOnlySet<string> previous, IReadOnlyList<FileEntry> written, Action beforeFirst)
+    {
+        var kept = written.Select(f => f.RelativePath).Append(FileFormats.Index.Path).Append(IncrementalState.Path).ToHashSet(StringComparer.Ordinal);
+        return previous.Where(p => !kept.Contains(p) && RelativeOutputPath.StaysInside(p)).Order(StringComparer.Ordinal)
+            .Count(relative => folder.RemoveEarlier(relative, "the previous run wrote it and this one does not", beforeFirst));
     }
 
     private static void RemoveIndex(string outDir)
@@ -232,11 +259,23 @@ public static class BatchCommand
         new(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
             $"interrupted: {files} file(s) ({bytes} bytes) were written to {outDir}, each whole; the folder is incomplete (no index.json, so verify calls it an incomplete run): run the same batch again to complete it"));
 
-    /// <summary>Whether a file the previous run wrote is still there with the size it recorded.</summary>
-    private static bool HasSize(string outDir, FileEntry file)
+    /// <summary>
+    /// Whether a file the previous run wrote still holds exactly the bytes it recorded: its SHA-256, not only
+    /// its size (a same-length edit keeps the size). A link or anything but a regular file is not reused.
+    /// </summary>
+    private static bool HoldsRecordedBytes(string outDir, FileEntry file)
     {
-        var info = new FileInfo(Path.Combine(outDir, file.RelativePath.Replace('/', Path.DirectorySeparatorChar)));
-        return info.Exists && info.Length == file.Bytes;
+        var target = OutputPaths.Target(outDir, file.RelativePath);
+        if (FileKinds.Of(target) != FileKind.Regular) return false;
+        try
+        {
+            using var stream = new FileStream(target, FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete, 1 << 16);
+            return stream.Length == file.Bytes && Convert.ToHexStringLower(SHA256.HashData(stream)) == file.Sha256;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
+        }
     }
 
     /// <summary>The previous run's incremental.json, or null when there is none or it is unreadable (then everything is exported).</summary>
@@ -245,7 +284,8 @@ public static class BatchCommand
         var path = Path.Combine(outDir, IncrementalState.Path);
         try
         {
-            return File.Exists(path) ? IncrementalStateFile.TryRead(File.ReadAllBytes(path)) : null;
+            // A regular file only: a link (or a FIFO) is not this folder's state.
+            return FileKinds.Of(path) == FileKind.Regular ? IncrementalStateFile.TryRead(File.ReadAllBytes(path)) : null;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

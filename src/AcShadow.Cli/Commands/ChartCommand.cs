@@ -99,7 +99,7 @@ public static class ChartCommand
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
         var objectIds = order.Concat(bareGfxObjs).ToArray();
 
-        using var folder = OutputFolder.Open(outDir);
+        using var folder = OutputFolder.Open(outDir, dat);
         var cells = planned?.Scene?.Cells ?? [];
         folder.RefuseForeign(ChartFiles.Heads(objectIds, cells.Count > 0 ? CellsCsv.Head : null));
         MovementChartOptions? movement = null;
@@ -169,7 +169,11 @@ public static class ChartCommand
                         var map = files.Add(chart);
                         // The previous run's tables describe other maps: they go before the first map is
                         // replaced, so a run stopped part-way leaves no chart.csv its maps contradict.
-                        if (mapsWritten == 0) RemovePreviousTables(outDir);
+                        if (mapsWritten == 0)
+                        {
+                            RemovePreviousTables(outDir);
+                            RemoveMapsNotCharted(folder, objectIds);
+                        }
                         bytes += folder.Write(map.RelativePath, map.Content);
                         mapsWritten++;
                         if (chart.Movement is { } moved && movementFiles is not null)
@@ -284,6 +288,20 @@ public static class ChartCommand
                 throw new CliException(ExitCodes.OutputFailed, $"cannot remove the previous run's {path} before replacing its failure maps: {e.Message}");
             }
         }
+    }
+
+    /// <summary>
+    /// An earlier run's failure maps of objects this run does not chart (an interrupted run's, or another
+    /// selection's): left, they would sit beside this run's chart.csv, which does not describe them. Only
+    /// maps that are acshadow's (their root element) are removed.
+    /// </summary>
+    private static void RemoveMapsNotCharted(OutputFolder folder, IEnumerable<uint> objectIds)
+    {
+        var charted = objectIds.Select(FailureMapSvg.FileName).ToHashSet(StringComparer.Ordinal);
+        var head = ChartFiles.Heads([0]).Single(f => f.RelativePath == FailureMapSvg.FileName(0)).Content;
+        foreach (var path in Directory.EnumerateFiles(folder.Root, FailureMapSvg.FilePattern).Order(StringComparer.Ordinal))
+            if (!charted.Contains(Path.GetFileName(path)) && ForeignFileGuard.IsOurs(path, head.Span))
+                folder.RemoveEarlier(Path.GetFileName(path), "an earlier run's map of an object this run does not chart");
     }
 
     private static string F(float v) => v.ToString(CultureInfo.InvariantCulture);

@@ -90,7 +90,7 @@ public static class DumpCommand
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(cellId), cellExport.Diagnostics);
         files.Add(cellFile);
         files.AddRange(cellExport.BspFiles);
-        var bytes = Write(console, outDir, OutputFormatSelection.Apply(files.DistinctBy(f => f.RelativePath), formats).ToArray());
+        var bytes = Write(console, outDir, dat, OutputFormatSelection.Apply(files.DistinctBy(f => f.RelativePath), formats).ToArray());
         console.Out.WriteLine(
             $"dump {JsonIds.Format(cellId)}: cell structure {envCell.CellStructure} of {JsonIds.Format(envCell.EnvironmentFileId)}, {cellFile.Listing!.PolygonCount} physics polygon(s), " +
             $"{envCell.Portals.Count} portal(s), {envCell.StaticObjects.Count} object(s) inside{(formats == OutputFormats.Canonical ? "" : $" (--format {formats.Name()})")}, " +
@@ -108,7 +108,7 @@ public static class DumpCommand
             ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(setupId)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
 
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(setupId), export.Diagnostics);
-        var bytes = Write(console, outDir, OutputFormatSelection.Apply(export.Files, formats).ToArray());
+        var bytes = Write(console, outDir, dat, OutputFormatSelection.Apply(export.Files, formats).ToArray());
         var set = export.Set;
         console.Out.WriteLine(
             $"dump {JsonIds.Format(setupId)}: {set.Shapes.Count} shape(s) under {set.Policy.Name()} " +
@@ -117,9 +117,9 @@ public static class DumpCommand
         return ExitCodes.Ok;
     }
 
-    private static long Write(CliConsole console, string outDir, IReadOnlyList<OutputFile> files)
+    private static long Write(CliConsole console, string outDir, OpenedDat dat, IReadOnlyList<OutputFile> files)
     {
-        using var folder = OutputFolder.Open(outDir);
+        using var folder = OutputFolder.Open(outDir, dat);
         folder.RefuseForeign(files);
         var bytes = folder.WriteEach(files, console.Out, console.Interrupted);
         folder.RequireStillInPlace();

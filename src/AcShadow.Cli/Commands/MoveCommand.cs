@@ -102,7 +102,7 @@ public static class MoveCommand
             ids = plan.Setups.Select(s => s.Id).ToArray();
         }
 
-        using var folder = OutputFolder.Open(outDir);
+        using var folder = OutputFolder.Open(outDir, dat);
         long bytes = 0;
         var cases = 0;
         foreach (var objectId in ids)

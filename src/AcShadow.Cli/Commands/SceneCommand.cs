@@ -1,6 +1,7 @@
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
+using System.Text.Json;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Movement;
 using AcShadow.Analysis.Compile;
@@ -10,8 +11,11 @@ using AcShadow.Cli.Terminal;
 using AcShadow.Core.Batch;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Catalog;
+using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
+using AcShadow.Files;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 
 namespace AcShadow.Cli.Commands;
@@ -70,6 +74,43 @@ public static class SceneCommand
         return command;
     }
 
+    /// <summary>The BSP dumps a compiled-scene.json names (its "file" values), when it is a regular file that reads as JSON; else none.</summary>
+    private static IReadOnlyList<string> DumpsNamedBy(string scenePath)
+    {
+        if (FileKinds.Of(scenePath) != FileKind.Regular) return [];
+        try
+        {
+            using var doc = JsonDocument.Parse(File.ReadAllBytes(scenePath));
+            var named = new List<string>();
+            void Walk(JsonElement e)
+            {
+                if (e.ValueKind == JsonValueKind.Object)
+                    foreach (var p in e.EnumerateObject())
+                        if (p.Name == "file" && p.Value.ValueKind == JsonValueKind.String) named.Add(p.Value.GetString()!);
+                        else Walk(p.Value);
+                else if (e.ValueKind == JsonValueKind.Array)
+                    foreach (var item in e.EnumerateArray()) Walk(item);
+            }
+            Walk(doc.RootElement);
+            return [.. named.Where(f => RelativeOutputPath.StaysInside(f) && f.EndsWith(".bsp.json", StringComparison.Ordinal)).Distinct()];
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException or InvalidOperationException)
+        {
+            return [];
+        }
+    }
+
+    /// <summary>
+    /// Removes the dumps the previous compiled-scene.json named that this run does not write (an object now
+    /// modelled by a cheaper model needs no dump); <paramref name="beforeFirst"/> runs before the first removal.
+    /// </summary>
+    private static void RemoveDumpsNoLongerNamed(OutputFolder folder, IReadOnlyList<string> previous, IReadOnlyList<OutputFile> files, Action beforeFirst)
+    {
+        var written = files.Select(f => f.RelativePath).ToHashSet(StringComparer.Ordinal);
+        foreach (var relative in previous.Where(p => !written.Contains(p)))
+            folder.RemoveEarlier(relative, "a dump the previous compile named and this one does not", beforeFirst);
+    }
+
     private static int Run(CliConsole console, BatchSelection selection, string? datPath, string? cellDatPath, string outDir, SceneCompileOptions options, bool quiet,
         uint? moverId)
     {
@@ -82,7 +123,7 @@ public static class SceneCommand
         if (typeof(SceneCompiler).Assembly.GetCustomAttributes(typeof(DebuggableAttribute), false)
                 .OfType<DebuggableAttribute>().Any(a => a.IsJITOptimizerDisabled))
             console.Error.WriteLine("acshadow: warning: this is a Debug build, so times per query are several times slower than a Release build's (dotnet run -c Release ...)");
-        using var folder = OutputFolder.Open(outDir);
+        using var folder = OutputFolder.Open(outDir, dat);
 
         var subjects = new ChartSubjects(dat.Portal);
         var placed = PlacedObject.Of(scene);
@@ -105,10 +146,29 @@ public static class SceneCommand
 
         var files = CompiledSceneFiles.Render(report, id => subjects.GfxObj(id) is { } g ? BspExtractor.Extract(g) : null);
         folder.RefuseForeign(files);
+        var previousDumps = DumpsNamedBy(Path.Combine(outDir, FileFormats.CompiledScene.Path));
         long bytes = 0;
+        var sceneRemoved = false;
+        void RemovePreviousScene()
+        {
+            if (!sceneRemoved) folder.RemoveEarlier(FileFormats.CompiledScene.Path, "the previous compile's scene, which names the dumps this run replaces");
+            sceneRemoved = true;
+        }
         foreach (var file in files)
         {
             console.Interrupted.ThrowIfCancellationRequested();
+            // Before the new scene: the dumps only the previous one named go, so the folder holds one compile.
+            if (file.RelativePath == FileFormats.CompiledScene.Path)
+                RemoveDumpsNoLongerNamed(folder, previousDumps, files, RemovePreviousScene);
+            if (folder.IsUnchanged(file.RelativePath, file.Content.Span))
+            {
+                bytes += file.Content.Length;
+                continue;
+            }
+            // The previous compiled-scene.json names the previous dumps: it goes before the first of them is
+            // replaced, and the new one is written last (CompiledSceneFiles), so no scene ever sits beside
+            // dumps of another compile (a run stopped part-way leaves none, which view --scene says).
+            RemovePreviousScene();
             bytes += folder.Write(file.RelativePath, file.Content);
         }
         folder.RequireStillInPlace();

@@ -1,6 +1,8 @@
 using System.CommandLine;
 using AcShadow.Cli.Infrastructure;
+using AcShadow.Cli.Output;
 using AcShadow.Core.Batch;
+using AcShadow.Core.Dat;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Shapes;
@@ -19,13 +21,6 @@ public static class VerifyCommand
 {
     /// <summary>At most this many JSON differences are printed per file.</summary>
     public const int MaxDifferencesShown = 20;
-
-    /// <summary>
-    /// The folders batch writes, as the file formats place their files (setups/, gfxobjs/, cells/): files in
-    /// them that regeneration does not produce are "extra".
-    /// </summary>
-    private static readonly string[] OutputFolders =
-        [.. FileFormats.All.Select(f => f.PathPattern).Where(p => p.Contains('/')).Select(p => p[..p.IndexOf('/')]).Distinct()];
 
     public static Command Create(CliConsole console)
     {
@@ -53,17 +48,31 @@ public static class VerifyCommand
 
         var plan = SelectionOptions.Plan(selection, dat);
         var options = recorded.BuildOptions();
-        var cellInfo = selection.Landblock is null ? null : dat.Cell?.Info;
-        var inputs = recorded with { Dat = dat.Portal.Info, CellDat = cellInfo };
+        var portalInfo = Identity(recorded.Dat, dat.Portal);
+        var cellInfo = selection.Landblock is null || dat.Cell is null ? null : Identity(recorded.CellDat, dat.Cell);
+        var inputs = recorded with { Dat = portalInfo, CellDat = cellInfo };
         var result = BatchRunner.Run(dat.Portal, options, plan, inputs, jobs, cancellation: console.Interrupted);
         dat.RequireUnchanged();
 
         var expected = result.AllFiles.ToDictionary(f => f.RelativePath, f => f.Content, StringComparer.Ordinal);
-        var actual = ReadFolder(folder, index);
-        var datDifferences = FixtureComparer.DatDifferences("dat", recorded.Dat, dat.Portal.Info)
+        var (actual, links) = ReadFolder(folder, index);
+        var datDifferences = FixtureComparer.DatDifferences("dat", recorded.Dat, portalInfo)
             .Concat(FixtureComparer.DatDifferences("cell dat", recorded.CellDat, cellInfo)).ToArray();
         var comparison = FixtureComparer.Compare(expected, actual, datDifferences);
-        return Report(console, folder, dat.Description, comparison);
+        return Report(console, folder, dat.Description, comparison, links);
+    }
+
+    /// <summary>
+    /// The dat at hand as the regenerated index records it. When index.json recorded a content hash and this
+    /// dat has the same one, it is the same dat whatever its name, and the recorded identity stands (so the
+    /// fixtures a sample made verify against that sample forged to disk). An index from before hashes is
+    /// regenerated as it was written: without one.
+    /// </summary>
+    private static DatSourceInfo Identity(DatSourceInfo? recorded, DatDatabase current)
+    {
+        if (recorded?.Sha256 is null) return current.Info;
+        var hashed = OpenedDat.Hashed(current);
+        return hashed.Sha256 == recorded.Sha256 ? recorded : hashed;
     }
 
     private static BatchIndex ReadIndex(string folder)
@@ -71,6 +80,8 @@ public static class VerifyCommand
         if (!Directory.Exists(folder))
             throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} is not a folder: pass the folder `acshadow batch --out` wrote");
         var path = Path.Combine(folder, FileFormats.Index.Path);
+        if (FileKinds.Of(path) == FileKind.SymbolicLink)
+            throw new CliException(ExitCodes.Usage, $"--fixtures: {path} is a symbolic link (to {FolderLinks.TargetOf(path)}): verify reads no file through a link (a fixtures folder holds the files batch wrote): pass the folder the index is in");
         if (FileKinds.Of(path, followLinks: true) == FileKind.Missing)
         {
             // A batch removes the old index before its first write and writes the new one last, so output
@@ -93,31 +104,64 @@ public static class VerifyCommand
         }
     }
 
-    /// <summary>index.json, every file under the folders batch writes, and any other file the index lists.</summary>
-    private static Dictionary<string, byte[]> ReadFolder(string folder, BatchIndex index)
+    /// <summary>A symbolic link met in the fixtures folder: its path in the folder, and the line that reports it.</summary>
+    private sealed record FoundLink(string Path, string Line);
+
+    /// <summary>
+    /// index.json, every file under the folders batch writes, and any other file the index lists, by their
+    /// paths in the folder; and the links met on the way. Nothing is read through a link or walked into
+    /// through one: a link is reported once, as a link (a loop named as such), and what it leads to is never
+    /// opened, so no file outside the folder reaches the report.
+    /// </summary>
+    private static (Dictionary<string, byte[]> Files, IReadOnlyList<FoundLink> Links) ReadFolder(string folder, BatchIndex index)
     {
         var files = new Dictionary<string, byte[]>(StringComparer.Ordinal);
+        var links = new SortedDictionary<string, FoundLink>(StringComparer.Ordinal);
+        bool Linked(string relative)
+        {
+            if (FolderLinks.FirstDetour(folder, relative, includeLast: true) is not { Kind: FileKind.SymbolicLink } detour) return false;
+            var at = Path.GetRelativePath(folder, detour.Path).Replace(Path.DirectorySeparatorChar, '/');
+            links.TryAdd(at, new FoundLink(at, LinkLine(at, detour.Path)));
+            return true;
+        }
         void Add(string relative)
         {
+            if (files.ContainsKey(relative) || Linked(relative)) return;
             var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
-            if (!files.ContainsKey(relative) && FileKinds.Of(full, followLinks: true) != FileKind.Missing) files[relative] = ReadFixture(folder, relative);
+            if (FileKinds.Of(full) != FileKind.Missing) files[relative] = ReadFixture(folder, relative);
+        }
+        void Walk(string relative)
+        {
+            if (Linked(relative)) return;
+            var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
+            if (FileKinds.Of(full) != FileKind.Folder) return;
+            foreach (var entry in Directory.EnumerateFileSystemEntries(full).Order(StringComparer.Ordinal))
+            {
+                var child = relative + "/" + Path.GetFileName(entry);
+                if (FileKinds.Of(entry) == FileKind.Folder) Walk(child);
+                else if (!entry.EndsWith(".tmp", StringComparison.Ordinal)) Add(child); // a .tmp: an interrupted write's leftover
+            }
         }
         Add(FileFormats.Index.Path);
         Add(FileFormats.Scene.Path);
-        foreach (var sub in OutputFolders)
-        {
-            var dir = Path.Combine(folder, sub);
-            if (!Directory.Exists(dir)) continue;
-            foreach (var file in Directory.EnumerateFiles(dir, "*", SearchOption.AllDirectories))
-            {
-                if (file.EndsWith(".tmp", StringComparison.Ordinal)) continue; // an interrupted write's leftover
-                Add(Path.GetRelativePath(folder, file).Replace(Path.DirectorySeparatorChar, '/'));
-            }
-        }
+        foreach (var sub in OutputPaths.Subfolders) Walk(sub);
         // Only paths inside the folder: an index is data, not a licence to read elsewhere.
-        foreach (var listed in index.Files.Where(f => !Path.IsPathRooted(f.Path) && !f.Path.Split('/', '\\').Contains("..")))
+        foreach (var listed in index.Files.Where(f => RelativeOutputPath.StaysInside(f.Path)))
             Add(listed.Path);
-        return files;
+        return (files, links.Values.ToArray());
+    }
+
+    /// <summary>How a link is reported: where it leads as written, and whether it leads back into the folder (a loop).</summary>
+    private static string LinkLine(string relative, string full)
+    {
+        var target = FolderLinks.TargetOf(full) ?? "?";
+        var parent = Path.GetDirectoryName(Path.GetFullPath(full))!;
+        var resolved = Path.GetFullPath(target, parent);
+        var loop = resolved == Path.GetFullPath(full)
+            || (parent + Path.DirectorySeparatorChar).StartsWith(resolved.TrimEnd(Path.DirectorySeparatorChar) + Path.DirectorySeparatorChar, StringComparison.Ordinal);
+        return loop
+            ? $"link {relative} -> {target} (a symbolic link loop: it leads back into the folder; not followed)"
+            : $"link {relative} -> {target} (a symbolic link: a fixtures folder holds only the files batch wrote, and verify reads nothing through a link; not followed)";
     }
 
     /// <summary>
@@ -138,41 +182,49 @@ public static class VerifyCommand
         }
     }
 
-    /// <summary>Whether the folder holds files a batch writes (its subfolders' JSON), index aside.</summary>
+    /// <summary>Whether the folder holds files a batch writes (JSON in its subfolders, which are not links), index aside.</summary>
     private static bool HasOutput(string folder) =>
-        OutputFolders.Any(sub => Directory.Exists(Path.Combine(folder, sub))
-            && Directory.EnumerateFiles(Path.Combine(folder, sub), "*.json", SearchOption.AllDirectories).Any());
+        OutputPaths.Subfolders.Any(sub => FileKinds.Of(Path.Combine(folder, sub)) == FileKind.Folder
+            && Directory.EnumerateFiles(Path.Combine(folder, sub), "*.json", SearchOption.TopDirectoryOnly).Any());
 
-    private static int Report(CliConsole console, string folder, string source, FixtureComparison c)
+    private static int Report(CliConsole console, string folder, string source, FixtureComparison c, IReadOnlyList<FoundLink> links)
     {
         var o = console.Out;
-        if (c.IsIdentical)
+        var shownFolder = PrintableText.Escape(folder);
+        if (c.IsIdentical && links.Count == 0)
         {
-            o.WriteLine($"verify: {folder} matches a fresh regeneration from {source} ({c.Compared} file(s), index.json included)");
+            o.WriteLine($"verify: {shownFolder} matches a fresh regeneration from {source} ({c.Compared} file(s), index.json included)");
             return ExitCodes.Ok;
         }
-        foreach (var d in c.DatDifferences) o.WriteLine($"dat differs from the one index.json records: {d}");
+        // Names and values come from the disk: every one is escaped before it reaches the terminal.
+        static string P(string text) => PrintableText.Escape(text);
+        foreach (var d in c.DatDifferences) o.WriteLine($"dat differs from the one index.json records: {P(d)}");
         foreach (var changed in c.Changed)
         {
             if (changed.OnlyLineEndings)
             {
-                o.WriteLine($"changed {changed.Path}: line endings differ (CRLF): the same bytes once CRLF is read as LF (a checkout converted them; keep fixtures exact with `fixtures/** -text` in .gitattributes)");
+                o.WriteLine($"changed {P(changed.Path)}: line endings differ (CRLF): the same bytes once CRLF is read as LF (a checkout converted them; keep fixtures exact with `fixtures/** -text` in .gitattributes)");
                 continue;
             }
-            o.WriteLine($"changed {changed.Path}");
+            o.WriteLine($"changed {P(changed.Path)}");
             if (changed.Differences is null)
             {
                 o.WriteLine("  (not JSON on one side: the bytes differ)");
                 continue;
             }
-            foreach (var d in changed.Differences.Take(MaxDifferencesShown)) o.WriteLine($"  {changed.Path}: {d}");
+            foreach (var d in changed.Differences.Take(MaxDifferencesShown)) o.WriteLine($"  {P(changed.Path)}: {P(d.ToString())}");
             if (changed.Differences.Count > MaxDifferencesShown)
-                o.WriteLine($"  … and {changed.Differences.Count - MaxDifferencesShown} more difference(s) in {changed.Path}");
+                o.WriteLine($"  … and {changed.Differences.Count - MaxDifferencesShown} more difference(s) in {P(changed.Path)}");
         }
-        foreach (var path in c.Missing) o.WriteLine($"missing {path} (regeneration writes it; {folder} lacks it)");
-        foreach (var path in c.Extra) o.WriteLine($"extra {path} ({folder} has it; regeneration does not write it)");
+        // A fixture that is a link is reported as the link, not also as missing.
+        var linked = links.Select(l => l.Path).ToHashSet(StringComparer.Ordinal);
+        var missing = c.Missing.Where(p => !linked.Contains(p)).ToArray();
+        foreach (var path in missing) o.WriteLine($"missing {P(path)} (regeneration writes it; {shownFolder} lacks it)");
+        foreach (var path in c.Extra) o.WriteLine($"extra {P(path)} ({shownFolder} has it; regeneration does not write it)");
+        foreach (var link in links) o.WriteLine(P(link.Line));
         console.Error.WriteLine(
-            $"acshadow: {folder} drifted: {c.Changed.Count} changed{(c.Changed.Count(f => f.OnlyLineEndings) is > 0 and var crlf ? (crlf == c.Changed.Count ? " (line endings differ (CRLF) only)" : $" ({crlf} in line endings (CRLF) only)") : "")}, {c.Missing.Count} missing, {c.Extra.Count} extra file(s)" +
+            $"acshadow: {shownFolder} drifted: {c.Changed.Count} changed{(c.Changed.Count(f => f.OnlyLineEndings) is > 0 and var crlf ? (crlf == c.Changed.Count ? " (line endings differ (CRLF) only)" : $" ({crlf} in line endings (CRLF) only)") : "")}, {missing.Length} missing, {c.Extra.Count} extra file(s)" +
+            (links.Count > 0 ? $", {links.Count} symbolic link(s) not followed" : "") +
             (c.DatDifferences.Count > 0 ? ", a different dat" : "") +
             " — if the change is intended, regenerate the fixtures (scripts/regenerate-fixtures.sh, or batch with index.json's inputs)");
         return ExitCodes.Drift;

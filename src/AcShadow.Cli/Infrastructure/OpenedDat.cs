@@ -27,6 +27,13 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
     public bool Reads(string path) =>
         FileKinds.Identity(path) is { } identity && (watches ?? []).Any(w => w.Is(identity));
 
+    /// <summary>
+    /// A dat's identity with its content's SHA-256 (the whole file read once more): what batch records in
+    /// index.json and verify compares, so a copy under another name is the same dat and a dat rewritten in
+    /// place is not.
+    /// </summary>
+    public static DatSourceInfo Hashed(DatDatabase dat) => dat.Info with { Sha256 = dat.Archive.ContentSha256() };
+
     /// <summary>Decoded objects a run over many objects keeps (<see cref="PortalWorkingSet"/>).</summary>
     public const int WorkingSetObjects = 256;
 

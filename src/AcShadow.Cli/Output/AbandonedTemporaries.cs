@@ -17,7 +17,8 @@ public static class AbandonedTemporaries
     public static void Remove(string root)
     {
         string[] folders;
-        try { folders = Directory.EnumerateDirectories(root).Prepend(root).ToArray(); }
+        // Real subfolders only: a linked one leads outside the folder, whose files are not this run's to remove.
+        try { folders = Directory.EnumerateDirectories(root).Where(d => FileKinds.Of(d) == FileKind.Folder).Prepend(root).ToArray(); }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException) { return; }
         foreach (var folder in folders)
         {

@@ -38,6 +38,10 @@ public static class ForeignFileGuard
             "move it away or pass another folder; nothing was written");
     }
 
+    /// <summary>Whether the regular file at <paramref name="path"/> starts as a file of <paramref name="content"/>'s kind would (<see cref="OutputOwnership"/>).</summary>
+    public static bool IsOurs(string path, ReadOnlySpan<byte> content) =>
+        FileKinds.Of(path) == FileKind.Regular && OutputOwnership.IsOurs(ReadHead(path), content);
+
     /// <summary>The start of a format's first line, as a file of that format would begin: for checking files not yet made.</summary>
     public static ReadOnlyMemory<byte> JsonHead(string format) => Encoding.UTF8.GetBytes($"{{\n  \"format\": \"{format}\",\n");
 

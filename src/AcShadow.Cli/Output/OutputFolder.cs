@@ -1,5 +1,6 @@
 using AcShadow.Cli.Infrastructure;
 using AcShadow.Core.Formats;
+using AcShadow.Files;
 
 namespace AcShadow.Cli.Output;
 
@@ -15,11 +16,13 @@ public sealed class OutputFolder : IDisposable
 {
     private const string Option = "--out";
     private readonly OutputFolderLock _lock;
+    private readonly OpenedDat? _reads;
 
-    private OutputFolder(string root, OutputFolderLock held)
+    private OutputFolder(string root, OutputFolderLock held, OpenedDat? reads)
     {
         Root = root;
         _lock = held;
+        _reads = reads;
     }
 
     public string Root { get; }
@@ -32,27 +35,71 @@ public sealed class OutputFolder : IDisposable
             throw new CliException(ExitCodes.OutputFailed, $"{Option}: {root} is a file: pass a folder (it is created when missing)");
     }
 
-    /// <summary>The folder made (when missing), shown writable, held, and rid of abandoned temporaries; nothing of this run is written yet.</summary>
-    public static OutputFolder Open(string root)
+    /// <summary>
+    /// The folder made (when missing), shown writable, held, and rid of abandoned temporaries; nothing of this
+    /// run is written yet. A link (or a file) where one of the folders a run writes in belongs is refused
+    /// here, before anything is written. <paramref name="reads"/>: the dats this run reads, which no write
+    /// may replace.
+    /// </summary>
+    public static OutputFolder Open(string root, OpenedDat? reads = null)
     {
         WriteProbe.Prepare(root, Option);
         var held = OutputFolderLock.Acquire(root, Option);
+        try
+        {
+            OutputPaths.RequireSubfoldersInside(root);
+        }
+        catch
+        {
+            held.Dispose();
+            throw;
+        }
         AbandonedTemporaries.Remove(root);
-        return new OutputFolder(root, held);
+        return new OutputFolder(root, held, reads);
     }
 
-    /// <summary>Refuses the run, naming them, when any of these files exists and is not acshadow's (or, listed, the folder's index says it is).</summary>
-    public void RefuseForeign(IEnumerable<OutputFile> files, IReadOnlySet<string>? listedAsOurs = null) =>
-        ForeignFileGuard.Refuse(Root, files, listedAsOurs, Option);
+    /// <summary>
+    /// Refuses the run, naming them, when any of these files is a dat the run reads, or exists and is not
+    /// acshadow's (or, listed, the folder's index says it is).
+    /// </summary>
+    public void RefuseForeign(IEnumerable<OutputFile> files, IReadOnlySet<string>? listedAsOurs = null)
+    {
+        var all = files as IReadOnlyCollection<OutputFile> ?? files.ToArray();
+        RefuseInputs(all.Select(f => f.RelativePath), "; nothing was written");
+        ForeignFileGuard.Refuse(Root, all, listedAsOurs, Option);
+    }
+
+    /// <summary>
+    /// Refuses the run when one of these paths names (by any link or spelling) a dat it reads: a file the
+    /// folder's own index lists is replaced without a look at its content, and a dat put there would be lost.
+    /// </summary>
+    public void RefuseInputs(IEnumerable<string> relativePaths, string said = "")
+    {
+        if (_reads is null) return;
+        foreach (var relative in relativePaths)
+        {
+            var target = OutputPaths.Target(Root, relative);
+            if (_reads.Reads(target))
+                throw new CliException(ExitCodes.OutputFailed, $"{Option}: {target} is a dat this run reads: acshadow never writes over its input; move the dat out of {Root} or pass another folder{said}");
+        }
+    }
 
     /// <summary>Whether the file already holds exactly these bytes (then it is left alone: its timestamp kept, no new inode).</summary>
     public bool IsUnchanged(string relativePath, ReadOnlySpan<byte> content) => UnchangedCheck.IsUnchanged(Root, relativePath, content);
 
     /// <summary>Writes one file whole; the bytes written.</summary>
-    public long Write(string relativePath, ReadOnlyMemory<byte> content) => AtomicOutput.Write(Root, relativePath, content);
+    public long Write(string relativePath, ReadOnlyMemory<byte> content)
+    {
+        RefuseInputs([relativePath]);
+        return AtomicOutput.Write(Root, relativePath, content);
+    }
 
     /// <summary>Writes one file whole from content <paramref name="write"/> streams in large chunks; the bytes written.</summary>
-    public long Write(string relativePath, Action<Stream> write) => AtomicOutput.Write(Root, relativePath, write);
+    public long Write(string relativePath, Action<Stream> write)
+    {
+        RefuseInputs([relativePath]);
+        return AtomicOutput.Write(Root, relativePath, write);
+    }
 
     /// <summary>
     /// Writes each file, saying so on <paramref name="log"/>, except one that already holds exactly its bytes
@@ -75,6 +122,27 @@ public sealed class OutputFolder : IDisposable
             bytes += content.Length;
         }
         return bytes;
+    }
+
+    /// <summary>
+    /// Removes a file an earlier run wrote that this run does not (<paramref name="because"/> says why it
+    /// goes, for the error line): only a regular file inside the folder; a link, a folder or nothing there is
+    /// left alone. <paramref name="beforeRemoving"/> runs first. Whether a file was removed.
+    /// </summary>
+    public bool RemoveEarlier(string relativePath, string because, Action? beforeRemoving = null)
+    {
+        var path = OutputPaths.Target(Root, relativePath);
+        if (FileKinds.Of(path) != FileKind.Regular) return false;
+        beforeRemoving?.Invoke();
+        try
+        {
+            File.Delete(path);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new CliException(ExitCodes.OutputFailed, $"cannot remove {path} ({because}): {e.Message}");
+        }
     }
 
     /// <summary>Fails (exit 6) when the folder at the path is no longer the one this run locked and wrote into.</summary>

@@ -117,8 +117,14 @@ public static class BatchIndexReader
         var source = DatIterationSource.Directory;
         if (e.TryGetProperty("iterationSource", out var s) && !(s.ValueKind == JsonValueKind.String && DatIterationSources.TryParse(s.GetString(), out source)))
             throw new FormatException($"{at}.iterationSource is not record, directory or directory-record-unreadable");
-        return new DatSourceInfo(Str(e, "fileName", at), Num(e, "size", at), kind, (int)Num(e, "iteration", at), (int)Num(e, "blockSize", at)) { IterationSource = source };
+        // sha256 is absent from indexes written before the dat's content was hashed.
+        string? sha256 = null;
+        if (e.TryGetProperty("sha256", out var h) && !(h.ValueKind == JsonValueKind.String && IsSha256(sha256 = h.GetString()!)))
+            throw new FormatException($"{at}.sha256 is not a SHA-256 (64 lowercase hex digits)");
+        return new DatSourceInfo(Str(e, "fileName", at), Num(e, "size", at), kind, (int)Num(e, "iteration", at), (int)Num(e, "blockSize", at)) { IterationSource = source, Sha256 = sha256 };
     }
+
+    private static bool IsSha256(string text) => text.Length == 64 && text.All(c => char.IsAsciiDigit(c) || c is >= 'a' and <= 'f');
 
     private static BatchSelection Selection(JsonElement e, string at)
     {

@@ -106,13 +106,18 @@ public static class BatchIndexWriter
         return inputs.Formats == OutputFormats.Canonical ? json : json.Add("formats", inputs.Formats.Name());
     }
 
-    public static JsonObj Dat(DatSourceInfo info) => new JsonObj()
-        .Add("fileName", info.FileName)
-        .Add("size", info.Size)
-        .Add("kind", info.Kind.ToString())
-        .Add("iteration", info.Iteration)
-        .Add("iterationSource", info.IterationSource.Name())
-        .Add("blockSize", info.BlockSize);
+    /// <summary>The dat's identity; its SHA-256 when the run hashed it (batch does: verify compares that, not the name).</summary>
+    public static JsonObj Dat(DatSourceInfo info)
+    {
+        var json = new JsonObj()
+            .Add("fileName", info.FileName)
+            .Add("size", info.Size)
+            .Add("kind", info.Kind.ToString())
+            .Add("iteration", info.Iteration)
+            .Add("iterationSource", info.IterationSource.Name())
+            .Add("blockSize", info.BlockSize);
+        return info.Sha256 is { } sha256 ? json.Add("sha256", sha256) : json;
+    }
 
     /// <summary>One file's entry, as index.json and incremental.json both record it.</summary>
     internal static JsonNode File(FileEntry f) => new JsonObj()

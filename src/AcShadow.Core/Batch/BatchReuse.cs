@@ -18,7 +18,7 @@ namespace AcShadow.Core.Batch;
 /// </summary>
 /// <param name="previous">The last run's state, or null (a full run that still records fingerprints).</param>
 /// <param name="objectBytes">Reads an object's raw bytes in the current dat into a buffer (see <see cref="ObjectReader"/>).</param>
-/// <param name="isOnDisk">Whether a file of the previous run is still there as recorded.</param>
+/// <param name="isOnDisk">Whether a file of the previous run is still there as recorded, its content hash included.</param>
 public sealed class BatchReuse(IncrementalState? previous, string toolKey, BatchReuse.ObjectReader objectBytes, Func<FileEntry, bool> isOnDisk)
 {
     /// <summary>

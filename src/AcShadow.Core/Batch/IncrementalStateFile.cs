@@ -1,3 +1,4 @@
+using System.Security.Cryptography;
 using System.Text.Json;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
@@ -10,11 +11,22 @@ namespace AcShadow.Core.Batch;
 /// <summary>
 /// incremental.json (docs/batch.md): <see cref="IncrementalState"/> as canonical JSON. Reading is
 /// forgiving by design: anything unreadable gives null, and the run that asked
-/// for it simply exports everything.
+/// for it simply exports everything. A state naming a file outside the folder (an absolute path, "..")
+/// is unreadable too: it is data, and reuse never reaches past the folder on its word; so is one whose
+/// content no longer matches its own SHA-256 (edited by hand), or that has none (written before it).
 /// </summary>
 public static class IncrementalStateFile
 {
-    public static byte[] Write(IncrementalState state) => CanonicalJsonWriter.WriteUtf8(new JsonObj()
+    public static byte[] Write(IncrementalState state) => CanonicalJsonWriter.WriteUtf8(Body(state).Add("sha256", Checksum(state)));
+
+    /// <summary>
+    /// The SHA-256 of the state's canonical bytes without this field, written last: a state edited by hand
+    /// (a count, a hash, a path) no longer matches it and is not trusted, since reuse copies a file's
+    /// recorded entry into index.json unread. A cache, not a seal: it catches edits, not forgeries.
+    /// </summary>
+    private static string Checksum(IncrementalState state) => Convert.ToHexStringLower(SHA256.HashData(CanonicalJsonWriter.WriteUtf8(Body(state))));
+
+    private static JsonObj Body(IncrementalState state) => new JsonObj()
         .Add("format", IncrementalState.Format)
         .Add("tool", state.Tool)
         .Add("setups", JsonArr.Of(state.Setups.OrderBy(s => s.Id), s => new JsonObj()
@@ -22,7 +34,7 @@ public static class IncrementalStateFile
             .Add("fingerprint", s.Fingerprint)
             .Add("parts", JsonArr.Of(s.Parts.Select(JsonIds.Format)))
             .Add("diagnostics", s.Diagnostics)
-            .Add("files", JsonArr.Of(s.Files, BatchIndexWriter.File)))));
+            .Add("files", JsonArr.Of(s.Files, BatchIndexWriter.File))));
 
     public static IncrementalState? TryRead(byte[] utf8)
     {
@@ -37,20 +49,24 @@ public static class IncrementalStateFile
                 s.GetProperty("parts").EnumerateArray().Select(Id).ToArray(),
                 s.GetProperty("diagnostics").GetInt32(),
                 s.GetProperty("files").EnumerateArray().Select(f => new FileEntry(
-                    f.GetProperty("path").GetString()!,
+                    Inside(f.GetProperty("path").GetString()),
                     Kind(f.GetProperty("kind").GetString()),
                     Id(f.GetProperty("id")),
                     f.GetProperty("shapes").GetInt32(),
                     f.GetProperty("polygons").GetInt32(),
                     f.GetProperty("bytes").GetInt64(),
                     f.GetProperty("sha256").GetString()!)).ToArray())).ToArray();
-            return new IncrementalState(root.GetProperty("tool").GetString()!, setups);
+            var state = new IncrementalState(root.GetProperty("tool").GetString()!, setups);
+            return root.TryGetProperty("sha256", out var sum) && sum.ValueKind == JsonValueKind.String && sum.GetString() == Checksum(state) ? state : null;
         }
         catch (Exception e) when (e is JsonException or InvalidOperationException or KeyNotFoundException or FormatException)
         {
             return null;
         }
     }
+
+    private static string Inside(string? path) =>
+        RelativeOutputPath.StaysInside(path) ? path! : throw new FormatException($"not a path inside the folder: {path}");
 
     private static uint Id(JsonElement e) =>
         JsonIds.TryParse(e.GetString(), out var id) ? id : throw new FormatException($"not an id: {e}");

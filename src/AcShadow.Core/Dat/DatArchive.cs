@@ -312,6 +312,32 @@ public sealed class DatArchive : IDisposable
         }
     }
 
+    /// <summary>
+    /// The SHA-256 of the whole file, lowercase hex: the dat's identity for index.json and verify (a copy
+    /// under another name is the same dat; a dat rewritten in place with the same size is not). Read in
+    /// chunks, never held whole.
+    /// </summary>
+    public string ContentSha256()
+    {
+        using var hash = System.Security.Cryptography.IncrementalHash.CreateHash(System.Security.Cryptography.HashAlgorithmName.SHA256);
+        var chunk = ArrayPool<byte>.Shared.Rent(1 << 20);
+        try
+        {
+            for (long offset = 0; offset < Length;)
+            {
+                var count = (int)Math.Min(chunk.Length, Length - offset);
+                ReadAt(offset, chunk.AsSpan(0, count));
+                hash.AppendData(chunk, 0, count);
+                offset += count;
+            }
+        }
+        finally
+        {
+            ArrayPool<byte>.Shared.Return(chunk);
+        }
+        return Convert.ToHexStringLower(hash.GetHashAndReset());
+    }
+
     public void Dispose()
     {
         if (_ownsStream) _stream.Dispose();

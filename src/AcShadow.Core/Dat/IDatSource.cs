@@ -40,4 +40,10 @@ public sealed record DatSourceInfo(string FileName, long Size, DatFileKind Kind,
 {
     /// <summary>Where <see cref="Iteration"/> came from.</summary>
     public DatIterationSource IterationSource { get; init; } = DatIterationSource.Directory;
+
+    /// <summary>
+    /// The SHA-256 of the whole file (lowercase hex), when the run hashed it (batch and verify do,
+    /// <see cref="DatArchive.ContentSha256"/>): what says two dats are the same dat, whatever their names.
+    /// </summary>
+    public string? Sha256 { get; init; }
 }

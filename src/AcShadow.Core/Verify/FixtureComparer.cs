@@ -28,7 +28,6 @@ public static class FixtureComparer
         return new FixtureComparison(missing, extra, changed, datDifferences, expected.Count);
     }
 
-    /// <summary>What differs between the dat index.json recorded and the dat at hand: name, size, iteration.</summary>
     /// <summary>True when <paramref name="old"/> is <paramref name="fresh"/> with every LF written CRLF.</summary>
     internal static bool IsCrlfOf(ReadOnlySpan<byte> old, ReadOnlySpan<byte> fresh)
     {
@@ -51,13 +50,22 @@ public static class FixtureComparer
         return i == old.Length && j == fresh.Length;
     }
 
+    /// <summary>
+    /// What differs between the dat index.json recorded and the dat at hand. With both content hashes, the
+    /// hash decides (the file name never does: a copy under another name is the same dat); without one
+    /// (an index written before hashes), the size and iteration.
+    /// </summary>
     public static IReadOnlyList<string> DatDifferences(string label, DatSourceInfo? recorded, DatSourceInfo? current)
     {
         if (recorded is null && current is null) return [];
         if (recorded is null || current is null)
             return [$"{label}: index.json records {(recorded is null ? "none" : recorded.FileName)}, this run has {(current is null ? "none" : current.FileName)}"];
         var differences = new List<string>();
-        if (recorded.FileName != current.FileName) differences.Add($"{label} file name: {recorded.FileName} → {current.FileName}");
+        if (recorded.Sha256 is { } was && current.Sha256 is { } now)
+        {
+            if (was == now) return [];
+            differences.Add($"{label} content: SHA-256 {was} → {now}");
+        }
         if (recorded.Size != current.Size) differences.Add($"{label} size: {recorded.Size} → {current.Size} bytes");
         if (recorded.Iteration != current.Iteration) differences.Add($"{label} iteration: {recorded.Iteration} → {current.Iteration}");
         return differences;

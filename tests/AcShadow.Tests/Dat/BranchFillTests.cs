@@ -145,7 +145,16 @@ public class BranchFillOutputTests
         Assert.Equal(files, Run(BranchFill.Cdcd, drwDats, drw));
         Assert.NotEqual(File.ReadAllBytes(Path.Combine(retailDats.Path, "client_portal.dat")), File.ReadAllBytes(Path.Combine(drwDats.Path, "client_portal.dat")));
         Assert.True(files.Length > 20);
-        foreach (var file in files)
+        foreach (var file in files.Where(f => f != "index.json"))
             Assert.Equal(File.ReadAllBytes(Path.Combine(retail.Path, file)), File.ReadAllBytes(Path.Combine(drw.Path, file)));
+        // index.json records each dat's SHA-256, and these are two dats: that, and only that, differs.
+        string Index(TempDir output, TempDir dats) => DatHashes(dats).Aggregate(File.ReadAllText(Path.Combine(output.Path, "index.json")),
+            (text, hash) => text.Replace(hash, "(the dat's SHA-256)", StringComparison.Ordinal));
+        Assert.NotEqual(DatHashes(retailDats), DatHashes(drwDats));
+        Assert.Equal(Index(retail, retailDats), Index(drw, drwDats));
+        Assert.Contains("(the dat's SHA-256)", Index(retail, retailDats));
     }
+
+    private static string[] DatHashes(TempDir dats) =>
+        [.. new[] { "client_portal.dat", "client_cell_1.dat" }.Select(name => Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData(File.ReadAllBytes(Path.Combine(dats.Path, name)))))];
 }

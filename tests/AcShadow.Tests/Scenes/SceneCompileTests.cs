@@ -159,7 +159,7 @@ public class SceneCompileTests
                 checkedProbes++;
             }
         Assert.Equal(report.Totals.Positions, checkedProbes);
-        using var doc = JsonDocument.Parse(files[0].Content);
+        using var doc = JsonDocument.Parse(files.Single(f => f.RelativePath == "compiled-scene.json").Content);
         Assert.Equal("acshadow.compiled-scene/1", doc.RootElement.GetProperty("format").GetString());
         var errors = Schemas.SchemaValidationTests.LoadSchemas().Validate(doc.RootElement, "urn:acshadow:schema:acshadow.compiled-scene-1");
         Assert.True(errors.Count == 0, string.Join('\n', errors.Take(10)));

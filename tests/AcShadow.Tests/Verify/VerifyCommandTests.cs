@@ -75,11 +75,26 @@ public class VerifyCommandTests
         using var dats = SampleDat.WriteToTempFolder();
         using var dir = Fixtures("--all", "--dat", dats.Path);
         Assert.Equal(0, CliRun.Of("verify", "--fixtures", dir.Path, "--dat", dats.Path).ExitCode);
-        var run = CliRun.Of("verify", "--fixtures", dir.Path); // the built-in sample: same objects, another name
+        // The same objects in a dat of another iteration: other bytes, so another dat.
+        using var other = new TempDir();
+        File.WriteAllBytes(Path.Combine(other.Path, "client_portal.dat"), AcShadow.Forging.SpecCompiler.Compile(AcShadow.Forging.SampleDats.Spec with { Iteration = 2 }).Portal);
+        var run = CliRun.Of("verify", "--fixtures", dir.Path, "--dat", other.Path);
         Assert.Equal(5, run.ExitCode);
-        Assert.Contains("dat differs from the one index.json records: dat file name: client_portal.dat → sample/client_portal.dat", run.Out);
-        Assert.Contains("index.json: $.inputs.dat.fileName", run.Out);
+        Assert.Contains("dat differs from the one index.json records: dat content: SHA-256 ", run.Out);
+        Assert.Contains("dat differs from the one index.json records: dat iteration: 1 → 2", run.Out);
+        Assert.Contains("index.json: $.inputs.dat.sha256", run.Out);
         Assert.DoesNotContain(Door, run.Out);
+    }
+
+    [Fact]
+    public void A_byte_identical_dat_under_another_name_is_the_same_dat()
+    {
+        using var dats = SampleDat.WriteToTempFolder();
+        using var dir = Fixtures("--all", "--dat", dats.Path);
+        var run = CliRun.Of("verify", "--fixtures", dir.Path); // the built-in sample: the same bytes, named sample/client_portal.dat
+        Assert.True(run.ExitCode == 0, run.Out + run.Error);
+        Assert.Contains("\"sha256\": \"" + Convert.ToHexStringLower(System.Security.Cryptography.SHA256.HashData(SampleDat.PortalBytes)) + "\"",
+            File.ReadAllText(Path.Combine(dir.Path, "index.json")));
     }
 
     [Fact]

@@ -20,6 +20,9 @@ public static class FailureMapSvg
 
     public static string FileName(uint setupId) => $"failure-map-{Id(setupId)}.svg";
 
+    /// <summary>Every failure map's name matches this (for finding an earlier run's).</summary>
+    public const string FilePattern = "failure-map-*.svg";
+
     public static string Write(ChartOptions options, string reference, ObjectChart chart)
     {
         var walk = options.EffectiveWalkHeight;
