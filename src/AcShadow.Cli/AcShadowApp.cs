@@ -39,6 +39,11 @@ public static class AcShadowApp
             console.Error.WriteLine($"acshadow: {error.Message}{suggestion} (see `{help}`)");
             return ExitCodes.Usage;
         }
+        // What this run writes, for the line an interrupted run ends with (and a forced stop's cleanup).
+        var ledger = new OutputLedger();
+        var outer = OutputLedger.Current;
+        OutputLedger.Current = ledger;
+        Interrupt.Watch(ledger);
         try
         {
             refused?.Throw();
@@ -49,10 +54,12 @@ public static class AcShadowApp
             var e = Unwrap(thrown);
             var (code, message) = e switch
             {
+                // A command's own line for Ctrl-C says what it wrote; the code tells Ctrl-C (130) from SIGTERM (143).
+                CliException { ExitCode: ExitCodes.Interrupted } c => (Interrupt.ExitCode, c.Message),
                 CliException c => (c.ExitCode, c.Message),
                 StandardOutputException o => (ExitCodes.OutputFailed, $"cannot write to standard output: {o.Message} (redirect it to a file or pipe that can take it)"),
-                // Ctrl-C where no command said what it had written (e.g. while the dat was being read).
-                OperationCanceledException => (ExitCodes.Interrupted, "interrupted: nothing was written"),
+                // A signal where no command said what it had written (e.g. while the dat was being read): the ledger does.
+                OperationCanceledException => (Interrupt.ExitCode, $"{Interrupt.Word}: {ledger.Summary()}"),
                 // The runtime reports a thread it could not start as out of memory, also when descriptors ran out.
                 OutOfMemoryException when e.StackTrace?.Contains("Thread.StartCore", StringComparison.Ordinal) == true => (ExitCodes.InternalError, "cannot start a worker thread: too few file descriptors or threads (raise `ulimit -n` or `ulimit -u`, or pass --jobs 1)"),
                 OutOfMemoryException => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
@@ -63,6 +70,8 @@ public static class AcShadowApp
                 IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),
                 _ => (ExitCodes.InternalError, $"internal error: {e.Message} (run with --verbose for the stack trace, and please report it)"),
             };
+            // A forced stop (Interrupt) that already printed the line is ending the process.
+            if (code is ExitCodes.Interrupted or ExitCodes.Terminated && !Interrupt.ClaimReport()) return code;
             try
             {
                 console.Error.WriteLine($"acshadow: {OneLine(message)}");
@@ -73,6 +82,10 @@ public static class AcShadowApp
             {
             }
             return code;
+        }
+        finally
+        {
+            OutputLedger.Current = outer;
         }
     }
 

@@ -106,6 +106,7 @@ public static class DumpCommand
         var engine = new ExportEngine(dat.Portal, options);
         var export = engine.ExportSetup(setupId)
             ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(setupId)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
+        PoseOptions.RequireUsable(options, dat.Portal, [setupId]);
 
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(setupId), export.Diagnostics);
         var bytes = Write(console, outDir, OutputFormatSelection.Apply(export.Files, formats).ToArray());

@@ -90,6 +90,7 @@ public static partial class ViewCommand
     private static IReadOnlyList<ViewScene> FromDat(CliConsole console, string? datPath, string? cellPath, uint[] ids, uint? landblock, ShapeBuildOptions pose, IReadOnlyList<ChartFailure> failures)
     {
         using var dat = DatLocator.Open(datPath, cellPath, console);
+        PoseOptions.RequireUsable(pose, dat.Portal, ids);
         var scenes = new List<ViewScene>();
         foreach (var id in ids)
         {

@@ -38,7 +38,11 @@ public static class ExplicitOutputFile
         {
             if (kind is FileKind.Missing or FileKind.Regular or FileKind.Unknown)
             {
-                AtomicOutput.Write(Path.GetDirectoryName(full)!, Path.GetFileName(full), content);
+                // The folder's lock, as every folder-writing command takes it: a report is not written into a
+                // folder another run is writing (a folder that does not exist yet has no such run).
+                var folder = Path.GetDirectoryName(full)!;
+                using var held = Directory.Exists(folder) ? OutputFolderLock.Acquire(folder) : null;
+                AtomicOutput.Write(folder, Path.GetFileName(full), content);
                 return;
             }
             if (FileKinds.Of(full, followLinks: true) is var target && target is FileKind.Folder or FileKind.Missing)
