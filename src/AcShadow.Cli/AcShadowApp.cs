@@ -61,8 +61,10 @@ public static class AcShadowApp
                 // A signal where no command said what it had written (e.g. while the dat was being read): the ledger does.
                 OperationCanceledException => (Interrupt.ExitCode, $"{Interrupt.Word}: {ledger.Summary()}"),
                 // The runtime reports a thread it could not start as out of memory, also when descriptors ran out.
+                // Under a virtual-memory limit, whatever could not be allocated (a thread's stack, a mapping) is memory.
+                _ when OutOfMemory(e) && VirtualMemoryLimit.Describe() is { } limit => (ExitCodes.InternalError, $"out of memory: {limit}, and this run needs more: raise it (or pass --jobs 1, which needs less)"),
                 OutOfMemoryException when e.StackTrace?.Contains("Thread.StartCore", StringComparison.Ordinal) == true => (ExitCodes.InternalError, "cannot start a worker thread: too few file descriptors or threads (raise `ulimit -n` or `ulimit -u`, or pass --jobs 1)"),
-                OutOfMemoryException => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
+                _ when OutOfMemory(e) => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
                 FileNotFoundException or FileLoadException when e.Message.Contains("assembly", StringComparison.Ordinal) => (ExitCodes.InternalError, Describe(e)),
                 IOException when DescriptorsExhausted(e) => (ExitCodes.InternalError, Describe(e)),
                 DatFormatException d => (ExitCodes.DatUnreadable, d.Message.StartsWith("corrupt dat", StringComparison.Ordinal) ? d.Message : $"corrupt dat: {d.Message}"),
@@ -104,6 +106,16 @@ public static class AcShadowApp
         }
     }
 
+    /// <summary>
+    /// Memory ran out: the runtime's exception, or an operating-system call that failed with ENOMEM (12,
+    /// "Cannot allocate memory"), or an assembly that could not be mapped under a virtual-memory limit.
+    /// </summary>
+    private static bool OutOfMemory(Exception e) =>
+        e is OutOfMemoryException or InsufficientExecutionStackException
+        || (e is IOException { HResult: 12 } && !OperatingSystem.IsWindows())
+        || e.Message.Contains("Cannot allocate memory", StringComparison.Ordinal)
+        || (e is FileNotFoundException or FileLoadException or BadImageFormatException && VirtualMemoryLimit.Bytes() is not null);
+
     /// <summary>Constants, so the last-resort line in Program needs no code of this class to run.</summary>
     public const string CannotLoad = "cannot load part of acshadow itself";
     public const string CannotLoadCause = "too few file descriptors (ulimit -n) or an incomplete installation";
@@ -111,6 +123,7 @@ public static class AcShadowApp
     /// <summary>A failure of acshadow's own process rather than its input: which part could not load, and the likely cause.</summary>
     public static string Describe(Exception thrown) => Unwrap(thrown) switch
     {
+        var e when OutOfMemory(e) && VirtualMemoryLimit.Describe() is { } limit => $"out of memory: {limit}, too little to load acshadow ({OneLine(e.Message)}): raise it",
         var e when e is FileNotFoundException or FileLoadException => $"{CannotLoad} ({OneLine(e.Message)}): {CannotLoadCause}",
         var e when DescriptorsExhausted(e) => $"too few file descriptors: {OneLine(e.Message)} (raise the limit, e.g. `ulimit -n 1024`; acshadow needs about 100)",
         var e => $"internal error: {OneLine(e.Message)} (run with --verbose for the stack trace, and please report it)",

@@ -128,6 +128,7 @@ public static class VerifyCommand
     {
         var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
         InputFile.RequireRegular(full, ExitCodes.Usage, "--fixtures", "a fixtures folder holds only the files batch wrote");
+        InputFile.RequireAtMost(full, InputFile.MaxFixtureBytes, ExitCodes.Usage, "--fixtures");
         try
         {
             return File.ReadAllBytes(full);

@@ -227,9 +227,11 @@ public static partial class ViewCommand
             var dumpPath = Path.Combine(folder, file);
             if (!File.Exists(dumpPath)) throw new FormatException($"it names {file}, which is missing");
             InputFile.RequireRegular(dumpPath, ExitCodes.Usage, "--scene", Fix);
+            InputFile.RequireAtMost(dumpPath, InputFile.MaxFixtureBytes, ExitCodes.Usage, "--scene");
             return dumps[file] = BspFileReader.Read(File.ReadAllText(dumpPath));
         }
         InputFile.RequireRegular(path, ExitCodes.Usage, "--scene", Fix);
+        InputFile.RequireAtMost(path, InputFile.MaxSceneBytes, ExitCodes.Usage, "--scene");
         CompiledSceneDrawing drawing;
         try
         {
@@ -255,6 +257,7 @@ public static partial class ViewCommand
     private static T ReadFixture<T>(string path, Func<string, T> read)
     {
         InputFile.RequireRegular(path, ExitCodes.Usage, "--fixtures", "pass the folder acshadow wrote");
+        InputFile.RequireAtMost(path, InputFile.MaxFixtureBytes, ExitCodes.Usage, "--fixtures");
         try
         {
             return read(File.ReadAllText(path));
