@@ -194,7 +194,7 @@ public sealed class ViewCommandTests
         Assert.Equal(3 * failures.Count, svg.Split("r=\"3.20\"").Length - 1);
     }
 
-    [Fact]
+    [RasterisingFact]
     public void The_svg_rasterises_with_the_door_leaf_drawn_where_the_shadow_file_puts_it()
     {
         using var dir = new TempDir();
