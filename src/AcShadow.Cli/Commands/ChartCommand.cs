@@ -59,7 +59,7 @@ public static class ChartCommand
                 ProbeRadius = parse.GetValue(radius) ?? ChartOptions.DefaultProbeRadius,
                 Spacing = parse.GetValue(spacing) ?? ChartOptions.DefaultSpacing,
             };
-            if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
+            if (options.Problem() is { } problem) throw ChartOptionProblem.Refusal(problem);
             var jobCount = parse.GetValue(jobs) ?? 1;
             return Run(console, ids, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options,
                 parse.GetValue(scale) ?? 1f, parse.GetValue(quiet), jobCount,

@@ -161,6 +161,11 @@ public static class VerifyCommand
                 o.WriteLine($"changed {changed.Path}: line endings differ (CRLF): the same bytes once CRLF is read as LF (a checkout converted them; keep fixtures exact with `fixtures/** -text` in .gitattributes)");
                 continue;
             }
+            if (changed.Reason is { } reason)
+            {
+                o.WriteLine($"changed {changed.Path}: {reason}");
+                continue;
+            }
             o.WriteLine($"changed {changed.Path}");
             if (changed.Differences is null)
             {

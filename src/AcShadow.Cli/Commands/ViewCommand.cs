@@ -165,7 +165,11 @@ public static partial class ViewCommand
             var path = Path.Combine(folder, FileFormats.Shadow.PathFor(id));
             if (!File.Exists(path))
                 throw new CliException(ExitCodes.NotInDat, $"--fixtures: no shadow file for Setup {JsonIds.Format(id)} ({path}): write it with `acshadow dump --setup {JsonIds.Format(id)} --out {folder}`");
-            return subjects[id] = ReadFixture(path, json => ViewSubjects.FromShadowFile(json, Dump));
+            var subject = ReadFixture(path, json => ViewSubjects.FromShadowFile(json, Dump));
+            // Drawn files are named for the Setup inside: a file named for another would be drawn (and written) twice.
+            if (subject.Id != id)
+                throw new CliException(ExitCodes.Usage, $"--fixtures: {path} holds Setup {JsonIds.Format(subject.Id)}, not the {JsonIds.Format(id)} its name says: a shadow file is named for its setupId; write it again with `acshadow dump --setup {JsonIds.Format(id)}`");
+            return subjects[id] = subject;
         }
 
         var scenePath = Path.Combine(folder, FileFormats.Scene.Path);

@@ -14,7 +14,7 @@ public static class ExplicitOutputFile
     /// <summary>Before the dat is read: the path names a file, not a folder.</summary>
     public static void Check(string path, string example)
     {
-        OutputPaths.RequireNamed(path);
+        OutputPaths.RequireNamed(path, "--out", "a file name", example);
         if (Directory.Exists(path))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {path} is a folder: pass a file name, e.g. {example}");
     }
@@ -31,7 +31,7 @@ public static class ExplicitOutputFile
 
     public static void Write(string path, byte[] content, string example = "audit.csv")
     {
-        OutputPaths.RequireNamed(path);
+        OutputPaths.RequireNamed(path, "--out", "a file name", example);
         var full = Path.GetFullPath(path);
         var kind = FileKinds.Of(full);
         try
