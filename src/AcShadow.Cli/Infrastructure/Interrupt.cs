@@ -13,7 +13,7 @@ namespace AcShadow.Cli.Infrastructure;
 public static class Interrupt
 {
     /// <summary>How long a command has to stop by itself after the first signal, so the signal is heard within a second.</summary>
-    public static readonly TimeSpan StopGrace = TimeSpan.FromMilliseconds(600);
+    public static readonly TimeSpan StopGrace = TimeSpan.FromMilliseconds(750);
 
     /// <summary>How long writes in flight get to end whole once the run is stopped from outside.</summary>
     private static readonly TimeSpan WriteGrace = TimeSpan.FromMilliseconds(250);
