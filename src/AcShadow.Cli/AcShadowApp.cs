@@ -39,6 +39,11 @@ public static class AcShadowApp
             console.Error.WriteLine($"acshadow: {error.Message}{suggestion} (see `{help}`)");
             return ExitCodes.Usage;
         }
+        // What this run writes, for the line an interrupted run ends with (and a forced stop's cleanup).
+        var ledger = new OutputLedger();
+        var outer = OutputLedger.Current;
+        OutputLedger.Current = ledger;
+        Interrupt.Watch(ledger);
         try
         {
             refused?.Throw();
@@ -49,13 +54,17 @@ public static class AcShadowApp
             var e = Unwrap(thrown);
             var (code, message) = e switch
             {
+                // A command's own line for Ctrl-C says what it wrote; the code tells Ctrl-C (130) from SIGTERM (143).
+                CliException { ExitCode: ExitCodes.Interrupted } c => (Interrupt.ExitCode, c.Message),
                 CliException c => (c.ExitCode, c.Message),
                 StandardOutputException o => (ExitCodes.OutputFailed, $"cannot write to standard output: {o.Message} (redirect it to a file or pipe that can take it)"),
-                // Ctrl-C where no command said what it had written (e.g. while the dat was being read).
-                OperationCanceledException => (ExitCodes.Interrupted, "interrupted: nothing was written"),
+                // A signal where no command said what it had written (e.g. while the dat was being read): the ledger does.
+                OperationCanceledException => (Interrupt.ExitCode, $"{Interrupt.Word}: {ledger.Summary()}"),
                 // The runtime reports a thread it could not start as out of memory, also when descriptors ran out.
+                // Under a virtual-memory limit, whatever could not be allocated (a thread's stack, a mapping) is memory.
+                _ when OutOfMemory(e) && VirtualMemoryLimit.Describe() is { } limit => (ExitCodes.InternalError, $"out of memory: {limit}, and this run needs more: raise it (or pass --jobs 1, which needs less)"),
                 OutOfMemoryException when e.StackTrace?.Contains("Thread.StartCore", StringComparison.Ordinal) == true => (ExitCodes.InternalError, "cannot start a worker thread: too few file descriptors or threads (raise `ulimit -n` or `ulimit -u`, or pass --jobs 1)"),
-                OutOfMemoryException => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
+                _ when OutOfMemory(e) => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
                 FileNotFoundException or FileLoadException when e.Message.Contains("assembly", StringComparison.Ordinal) => (ExitCodes.InternalError, Describe(e)),
                 IOException when DescriptorsExhausted(e) => (ExitCodes.InternalError, Describe(e)),
                 DatFormatException d => (ExitCodes.DatUnreadable, d.Message.StartsWith("corrupt dat", StringComparison.Ordinal) ? d.Message : $"corrupt dat: {d.Message}"),
@@ -63,6 +72,8 @@ public static class AcShadowApp
                 IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),
                 _ => (ExitCodes.InternalError, $"internal error: {e.Message} (run with --verbose for the stack trace, and please report it)"),
             };
+            // A forced stop (Interrupt) that already printed the line is ending the process.
+            if (code is ExitCodes.Interrupted or ExitCodes.Terminated && !Interrupt.ClaimReport()) return code;
             try
             {
                 console.Error.WriteLine($"acshadow: {OneLine(message)}");
@@ -73,6 +84,10 @@ public static class AcShadowApp
             {
             }
             return code;
+        }
+        finally
+        {
+            OutputLedger.Current = outer;
         }
     }
 
@@ -91,6 +106,16 @@ public static class AcShadowApp
         }
     }
 
+    /// <summary>
+    /// Memory ran out: the runtime's exception, or an operating-system call that failed with ENOMEM (12,
+    /// "Cannot allocate memory"), or an assembly that could not be mapped under a virtual-memory limit.
+    /// </summary>
+    private static bool OutOfMemory(Exception e) =>
+        e is OutOfMemoryException or InsufficientExecutionStackException
+        || (e is IOException { HResult: 12 } && !OperatingSystem.IsWindows())
+        || e.Message.Contains("Cannot allocate memory", StringComparison.Ordinal)
+        || (e is FileNotFoundException or FileLoadException or BadImageFormatException && VirtualMemoryLimit.Bytes() is not null);
+
     /// <summary>Constants, so the last-resort line in Program needs no code of this class to run.</summary>
     public const string CannotLoad = "cannot load part of acshadow itself";
     public const string CannotLoadCause = "too few file descriptors (ulimit -n) or an incomplete installation";
@@ -98,6 +123,7 @@ public static class AcShadowApp
     /// <summary>A failure of acshadow's own process rather than its input: which part could not load, and the likely cause.</summary>
     public static string Describe(Exception thrown) => Unwrap(thrown) switch
     {
+        var e when OutOfMemory(e) && VirtualMemoryLimit.Describe() is { } limit => $"out of memory: {limit}, too little to load acshadow ({OneLine(e.Message)}): raise it",
         var e when e is FileNotFoundException or FileLoadException => $"{CannotLoad} ({OneLine(e.Message)}): {CannotLoadCause}",
         var e when DescriptorsExhausted(e) => $"too few file descriptors: {OneLine(e.Message)} (raise the limit, e.g. `ulimit -n 1024`; acshadow needs about 100)",
         var e => $"internal error: {OneLine(e.Message)} (run with --verbose for the stack trace, and please report it)",

@@ -7,6 +7,8 @@ if (DescriptorLimit.Problem() is { } tooFew)
     RawStandardError.WriteLine(tooFew);
     return ExitCodes.InternalError;
 }
+// Under `ulimit -v` the runtime's defaults do not fit: a child with settings that do runs the command.
+if (VirtualMemoryLimit.RunLimitedChild(args) is { } childExit) return childExit;
 try
 {
     FileSizeSignal.Handle();

@@ -13,7 +13,8 @@ namespace AcShadow.Fuzz;
 /// `verify` must pass: a re-run repairs any damaged file (reuse checks content, not size).
 /// A case fails on an undocumented exit code or an internal error (exit 1), on a corrupt-object message
 /// without "corrupt dat" and the id, on a run past the time limit, on allocating more than the memory limit,
-/// or on output that is not whole.
+/// or on output that is not whole, or when the commands disagree about a dat refused at open (one damage,
+/// one answer: the portal dat a command refuses when it opens is refused by every command, with the same line).
 /// </summary>
 public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLimitBytes)
 {
@@ -86,6 +87,7 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
 
     private static CaseFailure? RunCommands(string[][] commands, List<int> exits, Dictionary<string, TimeSpan> times, Func<CaseFailure?> beforeVerify)
     {
+        var refusals = new Dictionary<string, string?>(StringComparer.Ordinal);
         foreach (var args in commands)
         {
             if (args[0] == "verify" && beforeVerify() is { } partial) return partial;
@@ -108,6 +110,7 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
             }
             exits.Add(code);
             if (Judge(args[0], code, error.ToString()) is { } failure) return failure;
+            if (Disagreement(refusals, args[0], error.ToString()) is { } disagreement) return disagreement;
         }
         return null;
     }
@@ -133,6 +136,21 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
                 return new CaseFailure($"{args[0]} after an incremental re-run: exit {code}", $"{output}\n{error}\n(the damaged fixture: {damaged ?? "none"})");
         }
         return null;
+    }
+
+    /// <summary>
+    /// The line a command refused the portal dat with when it opened it; a second command that opens the
+    /// same dat and does not give the same line is a failure (the dat layer decides damage once).
+    /// </summary>
+    private static CaseFailure? Disagreement(Dictionary<string, string?> refusals, string command, string stderr)
+    {
+        if (command == "verify") return null; // its fixtures are damaged on purpose: it may stop on them first
+        var line = stderr.Split('\n').FirstOrDefault(l => l.StartsWith("acshadow: --dat: ", StringComparison.Ordinal));
+        refusals[command] = line;
+        var others = refusals.Where(r => r.Key != command).ToArray();
+        return others.FirstOrDefault(o => o.Value != line) is { Key: { } other } mismatch
+            ? new CaseFailure($"{other} and {command} disagree about the dat", $"{other}: {mismatch.Value ?? "(opened it)"}\n{command}: {line ?? "(opened it)"}")
+            : null;
     }
 
     /// <summary>Why a command's exit code and stderr break the contract, or null.</summary>

@@ -80,20 +80,23 @@ public static class DoctorReportWriter
         sb.Append(Inv($"  portal dat: {p.FileLength} bytes, block size {p.BlockSize}, {p.Entries} entries, iteration {p.MaxEntryIteration}\n"));
         if (report.Cell is { } c)
             sb.Append(Inv($"  cell dat:   {c.FileLength} bytes, block size {c.BlockSize}, {c.Entries} entries, iteration {c.MaxEntryIteration}\n"));
+        else sb.Append("  cell dat:   not checked (none given: pass --cell-dat, keep client_cell_1.dat in the folder --dat names, or set ACSHADOW_CELL_DAT)\n");
         var width = report.Checks.Max(k => k.Key.Length);
+        // The widest verdict ("not applicable") and two spaces: the columns never run together.
+        var verdictWidth = Enum.GetValues<DoctorVerdict>().Max(v => v.Text().Length) + 2;
         foreach (var section in report.Checks.GroupBy(k => k.Section))
         {
             sb.Append('\n').Append(section.Key switch { DoctorChecks.Reading => "Reading", DoctorChecks.Retail => "Retail rules", _ => "The tool" }).Append('\n');
             foreach (var check in section)
             {
-                sb.Append("  ").Append(check.Verdict.Text().PadRight(14)).Append(check.Key.PadRight(width + 2)).Append(check.Headline).Append('\n');
+                sb.Append("  ").Append(check.Verdict.Text().PadRight(verdictWidth)).Append(check.Key.PadRight(width + 2)).Append(check.Headline).Append('\n');
                 if (check.Verdict == DoctorVerdict.Differs && check.Examples.Count > 0)
-                    sb.Append("  ").Append(' ', 14 + width + 2).Append(check.ExampleKind).Append(' ')
+                    sb.Append("  ").Append(' ', verdictWidth + width + 2).Append(check.ExampleKind).Append(' ')
                       .Append(string.Join(' ', check.Examples.Take(5).Select(JsonIds.Format)))
                       .Append(check.Examples.Count > 5 ? " …" : "").Append('\n');
             }
         }
-        sb.Append(Inv($"\n{report.Count(DoctorVerdict.Holds)} hold, {report.Count(DoctorVerdict.Differs)} differ, {report.Count(DoctorVerdict.NotApplicable)} not applicable, {report.Count(DoctorVerdict.NotChecked)} not checked\n"));
+        sb.Append(Inv($"\n{report.Count(DoctorVerdict.Holds)} hold, {report.Count(DoctorVerdict.Differs)} differ, {report.Count(DoctorVerdict.NotApplicable)} not applicable, {report.Count(DoctorVerdict.NotChecked)} not checked{(report.Cell is null ? "; the cell dat's LandBlockInfos not checked (no cell dat)" : "")}\n"));
         return sb.ToString();
     }
 

@@ -55,6 +55,7 @@ public static class AuditCommand
         using var dat = DatLocator.Open(datPath, cellPath, console);
         if (output is not null) ExplicitOutputFile.RefuseInput(output, dat, "audit.csv");
         var plan = SelectionOptions.Plan(selection, dat);
+        PoseOptions.RequireUsable(pose, dat.Portal, plan.Setups.Select(s => s.Id).ToArray());
         var progress = new ProgressReporter(console.Error, console.IsTerminal, quiet: !chart, "setups charted", "audit");
         AuditReport report;
         try

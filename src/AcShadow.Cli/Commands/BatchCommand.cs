@@ -77,6 +77,7 @@ public static class BatchCommand
         OutputFolder.Check(outDir);
         using var dat = DatLocator.Open(datPath, cellPath, console);
         var plan = SelectionOptions.Plan(selection, dat);
+        PoseOptions.RequireUsable(options, dat.Portal, plan.Setups.Select(s => s.Id).ToArray());
         var movement = MoveCommand.Selection(movementIds, moverId, dat);
         using var folder = OutputFolder.Open(outDir, dat);
         var inputs = new BatchInputs(OpenedDat.Hashed(dat.Portal), selection.Landblock is null || dat.Cell is null ? null : OpenedDat.Hashed(dat.Cell), options.Policy, options.EntityScale, selection)
@@ -257,7 +258,7 @@ public static class BatchCommand
     /// <summary>Ctrl-C: what is on disk, and that the folder is not a finished run (it has no index.json).</summary>
     private static CliException Interrupted(string outDir, int files, long bytes) =>
         new(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
-            $"interrupted: {files} file(s) ({bytes} bytes) were written to {outDir}, each whole; the folder is incomplete (no index.json, so verify calls it an incomplete run): run the same batch again to complete it"));
+            $"{Interrupt.Word}: {files} file(s) ({bytes} bytes) were written to {outDir}, each whole; the folder is incomplete (no index.json, so verify calls it an incomplete run): run the same batch again to complete it"));
 
     /// <summary>
     /// Whether a file the previous run wrote still holds exactly the bytes it recorded: its SHA-256, not only

@@ -65,7 +65,7 @@ public static class ChartCommand
                 ProbeRadius = parse.GetValue(radius) ?? ChartOptions.DefaultProbeRadius,
                 Spacing = parse.GetValue(spacing) ?? ChartOptions.DefaultSpacing,
             };
-            if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
+            if (options.Problem() is { } problem) throw ChartOptionProblem.Refusal(problem);
             var jobCount = parse.GetValue(jobs) ?? 1;
             var byMovement = parse.GetValue(movement);
             if (!byMovement && (parse.GetValue(mover) is not null || parse.GetValue(walk) is not null))
@@ -98,6 +98,7 @@ public static class ChartCommand
         var order = ids.Concat(planned?.Setups.Select(s => s.Id) ?? []).Distinct().ToArray();
         var bareGfxObjs = planned?.Scene?.GfxObjIds ?? [];
         var objectIds = order.Concat(bareGfxObjs).ToArray();
+        PoseOptions.RequireUsable(pose, dat.Portal, order);
 
         using var folder = OutputFolder.Open(outDir, dat);
         var cells = planned?.Scene?.Cells ?? [];
@@ -208,7 +209,7 @@ public static class ChartCommand
         catch (OperationCanceledException) when (console.Interrupted.IsCancellationRequested)
         {
             throw new CliException(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
-                $"interrupted: {mapsWritten} failure map(s) of {objectIds.Length} object(s) were written to {outDir}, each whole; chart.csv, summary.csv, failures.csv and speed-accuracy.svg were not (nor are an earlier run's left), so the folder is incomplete: run the same chart again"));
+                $"{Interrupt.Word}: {mapsWritten} failure map(s) of {objectIds.Length} object(s) were written to {outDir}, each whole; chart.csv, summary.csv, failures.csv and speed-accuracy.svg were not (nor are an earlier run's left), so the folder is incomplete: run the same chart again"));
         }
         finally
         {

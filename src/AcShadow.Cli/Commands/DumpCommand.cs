@@ -58,6 +58,9 @@ public static class DumpCommand
     {
         if (!JsonIds.TryParse(text, out var id))
             throw new CliException(ExitCodes.Usage, $"--cell: '{text}' is not a cell id: write it in hex, e.g. 0xA9B40100");
+        // A bare 0xXXYY is a landblock: its indoor cells are 0xXXYY0100 and up.
+        if (id is > 0 and <= 0xFFFF)
+            throw new CliException(ExitCodes.Usage, $"--cell: {text} is a landblock id (0xXXYY), not a cell's: its indoor cells are 0x{id:X4}0100 and up (e.g. --cell 0x{id:X4}0100); for the whole landblock use batch, scene or view --landblock 0x{id:X4}");
         if (!DatObjectKind.EnvCell.Contains(id))
             throw new CliException(ExitCodes.Usage, $"--cell: 0x{id:X8} is not an indoor cell id: indoor cells are {DatObjectKind.EnvCell.RangeText()} (0xXXYY0001-0xXXYY0040 are outdoor land cells, which have no EnvCell)");
         return id;
@@ -106,6 +109,7 @@ public static class DumpCommand
         var engine = new ExportEngine(dat.Portal, options);
         var export = engine.ExportSetup(setupId)
             ?? throw new CliException(ExitCodes.NotInDat, $"Setup {JsonIds.Format(setupId)} is not in {dat.Description}: check the id (`acshadow audit --all` lists every Setup the dat has)");
+        PoseOptions.RequireUsable(options, dat.Portal, [setupId]);
 
         DiagnosticPrinter.Print(console.Error, JsonIds.Format(setupId), export.Diagnostics);
         var bytes = Write(console, outDir, dat, OutputFormatSelection.Apply(export.Files, formats).ToArray());

@@ -68,7 +68,7 @@ public static class SceneCommand
                 EntityScale = parse.GetValue(scale) ?? 1f,
                 TolerancePercent = parse.GetValue(tolerance) ?? 0,
             };
-            if (options.Problem() is { } problem) throw new CliException(ExitCodes.Usage, problem);
+            if (options.Problem() is { } problem) throw ChartOptionProblem.Refusal(problem);
             return Run(console, chosen, parse.GetValue(dat), parse.GetValue(selection.CellDat), parse.GetValue(outDir)!, options, parse.GetValue(quiet), parse.GetValue(mover));
         });
         return command;

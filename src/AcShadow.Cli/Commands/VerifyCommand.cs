@@ -85,9 +85,10 @@ public static class VerifyCommand
         if (FileKinds.Of(path, followLinks: true) == FileKind.Missing)
         {
             // A batch removes the old index before its first write and writes the new one last, so output
-            // without an index is a run that was stopped (Ctrl-C, a kill, a failure) before it finished.
+            // without an index is a run that was stopped before it finished, or what `dump` writes (no index):
+            // either way nothing says what the files should be, which is a usage error, not drift.
             if (HasOutput(folder))
-                throw new CliException(ExitCodes.Drift, $"--fixtures: {folder} is an incomplete run: it holds batch output but no {FileFormats.Index.Path} (the batch that wrote it was stopped before the end): run the batch again");
+                throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} has no {FileFormats.Index.Path}, so it is no finished batch: it holds acshadow output (what `dump` writes, or an incomplete run: a batch stopped before the end); verify checks what `acshadow batch --out` wrote: run the batch into it first");
             throw new CliException(ExitCodes.Usage, $"--fixtures: {folder} has no {FileFormats.Index.Path}: pass a folder `acshadow batch --out` wrote");
         }
         var bytes = ReadFixture(folder, FileFormats.Index.Path);
@@ -172,6 +173,7 @@ public static class VerifyCommand
     {
         var full = Path.Combine(folder, relative.Replace('/', Path.DirectorySeparatorChar));
         InputFile.RequireRegular(full, ExitCodes.Usage, "--fixtures", "a fixtures folder holds only the files batch wrote");
+        InputFile.RequireAtMost(full, InputFile.MaxFixtureBytes, ExitCodes.Usage, "--fixtures");
         try
         {
             return File.ReadAllBytes(full);
@@ -206,6 +208,11 @@ public static class VerifyCommand
                 o.WriteLine($"changed {P(changed.Path)}: line endings differ (CRLF): the same bytes once CRLF is read as LF (a checkout converted them; keep fixtures exact with `fixtures/** -text` in .gitattributes)");
                 continue;
             }
+            if (changed.Reason is { } reason)
+            {
+                o.WriteLine($"changed {P(changed.Path)}: {reason}");
+                continue;
+            }
             o.WriteLine($"changed {P(changed.Path)}");
             if (changed.Differences is null)
             {
@@ -226,7 +233,7 @@ public static class VerifyCommand
             $"acshadow: {shownFolder} drifted: {c.Changed.Count} changed{(c.Changed.Count(f => f.OnlyLineEndings) is > 0 and var crlf ? (crlf == c.Changed.Count ? " (line endings differ (CRLF) only)" : $" ({crlf} in line endings (CRLF) only)") : "")}, {missing.Length} missing, {c.Extra.Count} extra file(s)" +
             (links.Count > 0 ? $", {links.Count} symbolic link(s) not followed" : "") +
             (c.DatDifferences.Count > 0 ? ", a different dat" : "") +
-            " — if the change is intended, regenerate the fixtures (scripts/regenerate-fixtures.sh, or batch with index.json's inputs)");
+            " — if the change is intended, regenerate the fixtures: run `acshadow batch` into the folder again with the inputs its index.json records");
         return ExitCodes.Drift;
     }
 }

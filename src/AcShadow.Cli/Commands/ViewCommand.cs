@@ -93,6 +93,7 @@ public static partial class ViewCommand
     private static IReadOnlyList<ViewScene> FromDat(CliConsole console, string? datPath, string? cellPath, uint[] ids, uint? landblock, ShapeBuildOptions pose, IReadOnlyList<ChartFailure> failures)
     {
         using var dat = DatLocator.Open(datPath, cellPath, console);
+        PoseOptions.RequireUsable(pose, dat.Portal, ids);
         var scenes = new List<ViewScene>();
         // The fitted models the chart's markers name are drawn too, so each marker stands with its model's shapes.
         var fitted = failures.Select(f => f.Model).ToHashSet(StringComparer.Ordinal);
@@ -193,7 +194,11 @@ public static partial class ViewCommand
             var path = Path.Combine(folder, FileFormats.Shadow.PathFor(id));
             if (!File.Exists(path))
                 throw new CliException(ExitCodes.NotInDat, $"--fixtures: no shadow file for Setup {JsonIds.Format(id)} ({path}): write it with `acshadow dump --setup {JsonIds.Format(id)} --out {folder}`");
-            return subjects[id] = ReadFixture(path, json => ViewSubjects.FromShadowFile(json, Dump));
+            var subject = ReadFixture(path, json => ViewSubjects.FromShadowFile(json, Dump));
+            // Drawn files are named for the Setup inside: a file named for another would be drawn (and written) twice.
+            if (subject.Id != id)
+                throw new CliException(ExitCodes.Usage, $"--fixtures: {path} holds Setup {JsonIds.Format(subject.Id)}, not the {JsonIds.Format(id)} its name says: a shadow file is named for its setupId; write it again with `acshadow dump --setup {JsonIds.Format(id)}`");
+            return subjects[id] = subject;
         }
 
         var scenePath = Path.Combine(folder, FileFormats.Scene.Path);
@@ -279,9 +284,11 @@ public static partial class ViewCommand
             var dumpPath = Path.Combine(folder, file);
             if (!File.Exists(dumpPath)) throw new FormatException($"it names {file}, which is missing");
             InputFile.RequireRegular(dumpPath, ExitCodes.Usage, "--scene", Fix);
+            InputFile.RequireAtMost(dumpPath, InputFile.MaxFixtureBytes, ExitCodes.Usage, "--scene");
             return dumps[file] = BspFileReader.Read(File.ReadAllText(dumpPath));
         }
         InputFile.RequireRegular(path, ExitCodes.Usage, "--scene", Fix);
+        InputFile.RequireAtMost(path, InputFile.MaxSceneBytes, ExitCodes.Usage, "--scene");
         CompiledSceneDrawing drawing;
         try
         {
@@ -324,6 +331,7 @@ public static partial class ViewCommand
     private static T ReadFixture<T>(string path, Func<string, T> read)
     {
         InputFile.RequireRegular(path, ExitCodes.Usage, "--fixtures", "pass the folder acshadow wrote");
+        InputFile.RequireAtMost(path, InputFile.MaxFixtureBytes, ExitCodes.Usage, "--fixtures");
         try
         {
             return read(File.ReadAllText(path));

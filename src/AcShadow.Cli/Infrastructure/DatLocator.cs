@@ -7,17 +7,22 @@ namespace AcShadow.Cli.Infrastructure;
 
 /// <summary>
 /// Finds the dat: --dat (the file, or a folder holding client_portal.dat), else ACSHADOW_DAT, else the
-/// built-in forged sample, opened from memory through the same reader a retail dat goes through.
+/// built-in forged sample, opened from memory through the same reader a retail dat goes through. The cell
+/// dat: --cell-dat, else ACSHADOW_CELL_DAT, else client_cell_1.dat in the folder --dat (or ACSHADOW_DAT)
+/// names, opened when a command first needs cells.
 /// </summary>
 public static class DatLocator
 {
     public const string EnvironmentVariable = "ACSHADOW_DAT";
+    public const string CellEnvironmentVariable = "ACSHADOW_CELL_DAT";
     public const string PortalFileName = "client_portal.dat";
     public const string CellFileName = "client_cell_1.dat";
 
     public static OpenedDat Open(string? datOption, string? cellDatOption, CliConsole console)
     {
         var watches = new List<DatFileWatch>();
+        var cellSource = cellDatOption is null ? CellEnvironmentVariable : "--cell-dat";
+        cellDatOption ??= NullIfEmpty(console.Environment(CellEnvironmentVariable));
         var portalPath = datOption ?? NullIfEmpty(console.Environment(EnvironmentVariable));
         if (portalPath is null)
         {
@@ -25,15 +30,18 @@ public static class DatLocator
             var (portalBytes, cellBytes) = SampleDats.Build();
             var samplePortal = OpenBytes(portalBytes, "sample/" + PortalFileName);
             var sampleCell = cellDatOption is null && cellBytes is not null ? OpenBytes(cellBytes, "sample/" + CellFileName) : null;
-            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell, watches);
+            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, cellSource, DatFileKind.Cell, watches);
             return new OpenedDat(samplePortal, cellFromOption ?? sampleCell, "the built-in synthetic sample", true, watches);
         }
         var source = datOption is null ? EnvironmentVariable : "--dat";
         var portal = OpenFile(portalPath, PortalFileName, source, DatFileKind.Portal, watches);
         try
         {
-            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, "--cell-dat", DatFileKind.Cell, watches);
-            return new OpenedDat(portal, cell, portal.Archive.Name, false, watches);
+            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, cellSource, DatFileKind.Cell, watches);
+            // A folder holding both dats (the client's own folder) gives the cell dat too.
+            var beside = cell is null && Directory.Exists(portalPath) && File.Exists(Path.Combine(portalPath, CellFileName)) ? portalPath : null;
+            return new OpenedDat(portal, cell, portal.Archive.Name, false, watches,
+                beside is null ? null : (Path.Combine(beside, CellFileName), () => OpenFile(beside, CellFileName, source, DatFileKind.Cell, watches)));
         }
         catch
         {

@@ -12,4 +12,6 @@ public static class ExitCodes
     public const int OutputFailed = 6;
     /// <summary>Ctrl-C (SIGINT): 128 + 2, as a shell reports a process the signal ended.</summary>
     public const int Interrupted = 130;
+    /// <summary>SIGTERM: 128 + 15.</summary>
+    public const int Terminated = 143;
 }

@@ -3,11 +3,17 @@ using AcShadow.Files;
 
 namespace AcShadow.Cli.Infrastructure;
 
-/// <summary>An open portal dat (and cell dat when one was asked for), with how to name it to the user.</summary>
-public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string description, bool isSample, IReadOnlyList<DatFileWatch>? watches = null) : IDisposable
+/// <summary>
+/// An open portal dat (and cell dat when one was asked for, or found beside the portal dat: that one is opened
+/// when a command first needs it), with how to name it to the user.
+/// </summary>
+public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string description, bool isSample, IReadOnlyList<DatFileWatch>? watches = null,
+    (string File, Func<DatDatabase> Open)? foundCell = null) : IDisposable
 {
+    private readonly Lazy<DatDatabase?> _cell = new(() => cell ?? foundCell?.Open());
+
     public DatDatabase Portal { get; } = portal;
-    public DatDatabase? Cell { get; } = cell;
+    public DatDatabase? Cell => _cell.Value;
     public string Description { get; } = description;
     public bool IsSample { get; } = isSample;
 
@@ -25,7 +31,8 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
 
     /// <summary>Whether <paramref name="path"/> names (through any link) a dat file this run reads.</summary>
     public bool Reads(string path) =>
-        FileKinds.Identity(path) is { } identity && (watches ?? []).Any(w => w.Is(identity));
+        FileKinds.Identity(path) is { } identity && ((watches ?? []).Any(w => w.Is(identity))
+            || (foundCell is { File: var found } && FileKinds.Identity(found) is { } cellIdentity && cellIdentity.AsSpan().SequenceEqual(identity)));
 
     /// <summary>
     /// A dat's identity with its content's SHA-256 (the whole file read once more): what batch records in
@@ -47,6 +54,6 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
     public void Dispose()
     {
         Portal.Dispose();
-        Cell?.Dispose();
+        if (_cell.IsValueCreated) _cell.Value?.Dispose();
     }
 }

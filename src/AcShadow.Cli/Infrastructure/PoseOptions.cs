@@ -1,4 +1,5 @@
 using System.CommandLine;
+using AcShadow.Core.Catalog;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Json;
 using AcShadow.Fixtures.Json;
@@ -24,12 +25,35 @@ public sealed class PoseOptions
 
     public IEnumerable<Option> All => [Pose, State, MotionTable];
 
-    public ShapeBuildOptions Apply(ParseResult parse, ShapeBuildOptions options) => options with
+    public ShapeBuildOptions Apply(ParseResult parse, ShapeBuildOptions options)
     {
-        Pose = parse.GetValue(Pose) ?? PosePolicy.Retail,
-        DoorState = parse.GetValue(State) ?? DoorState.Closed,
-        MotionTable = parse.GetValue(MotionTable),
-    };
+        var pose = parse.GetValue(Pose) ?? PosePolicy.Retail;
+        // A door's state is a motion of the retail pose: the placement frame has none to take.
+        if (pose == PosePolicy.Placement && parse.GetValue(State) is { } state)
+            throw new CliException(ExitCodes.Usage, $"--state {state.Name()} poses a door by its motion table, which --pose placement does not use: drop --state or --pose placement");
+        if (pose == PosePolicy.Placement && parse.GetValue(MotionTable) is { } table)
+            throw new CliException(ExitCodes.Usage, $"--motion-table {JsonIds.Format(table)} poses by a motion table, which --pose placement does not use: drop --motion-table or --pose placement");
+        return options with
+        {
+            Pose = pose,
+            DoorState = parse.GetValue(State) ?? DoorState.Closed,
+            MotionTable = parse.GetValue(MotionTable),
+        };
+    }
+
+    /// <summary>
+    /// Once the dat is open and the Setups chosen: a --motion-table the dat lacks is exit 4 (as any id not in
+    /// the dat), and --state open with no door among the Setups would change nothing, so it is a usage error.
+    /// </summary>
+    public static void RequireUsable(ShapeBuildOptions options, IDatSource portal, IReadOnlyCollection<uint> setups)
+    {
+        if (options.MotionTable is { } table && portal.ReadMotionTable(table) is null)
+            throw new CliException(ExitCodes.NotInDat, $"--motion-table: MotionTable {JsonIds.Format(table)} is not in {portal.Info.FileName}: check the id (a Setup's own table is its DefaultMotionTable)");
+        if (options.DoorState == DoorState.Open && setups.Count > 0 && !setups.Any(id => DoorCatalog.Find(id) is not null))
+            throw new CliException(ExitCodes.Usage, setups.Count == 1
+                ? $"--state open: Setup {JsonIds.Format(setups.First())} is not a door (the door catalog does not list it), so it has no open state: drop --state"
+                : $"--state open: none of the {setups.Count} selected Setups is a door (the door catalog lists none of them): drop --state, or select doors (--doors)");
+    }
 
     private static PosePolicy ParsePose(string text) =>
         PoseNames.TryParse(text, out PosePolicy pose) ? pose

@@ -19,9 +19,16 @@ public static class AtomicOutput
 
     private static long Guarded(string root, string target, Func<string, long> write)
     {
+        // The run's ledger (when it keeps one) knows each write in flight, so a signal can stop the run
+        // without leaving its temporary file, and counts what was written whole.
+        var ledger = OutputLedger.Current;
+        var full = Path.GetFullPath(target);
+        ledger?.Begin(full);
+        long? written = null;
         try
         {
-            return write(target);
+            written = write(target);
+            return written.Value;
         }
         catch (NotARegularFileException e)
         {
@@ -41,6 +48,10 @@ public static class AtomicOutput
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
             throw new CliException(ExitCodes.OutputFailed, $"cannot write {target}: {e.Message} (check --out points at a writable folder with free space)");
+        }
+        finally
+        {
+            ledger?.End(root, full, written);
         }
     }
 }

@@ -14,7 +14,7 @@ public static class ExplicitOutputFile
     /// <summary>Before the dat is read: the path names a file, not a folder.</summary>
     public static void Check(string path, string example)
     {
-        OutputPaths.RequireNamed(path);
+        OutputPaths.RequireNamed(path, "--out", "a file name", example);
         if (Directory.Exists(path))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {path} is a folder: pass a file name, e.g. {example}");
     }
@@ -31,14 +31,18 @@ public static class ExplicitOutputFile
 
     public static void Write(string path, byte[] content, string example = "audit.csv")
     {
-        OutputPaths.RequireNamed(path);
+        OutputPaths.RequireNamed(path, "--out", "a file name", example);
         var full = Path.GetFullPath(path);
         var kind = FileKinds.Of(full);
         try
         {
             if (kind is FileKind.Missing or FileKind.Regular or FileKind.Unknown)
             {
-                AtomicOutput.Write(Path.GetDirectoryName(full)!, Path.GetFileName(full), content);
+                // The folder's lock, as every folder-writing command takes it: a report is not written into a
+                // folder another run is writing (a folder that does not exist yet has no such run).
+                var folder = Path.GetDirectoryName(full)!;
+                using var held = Directory.Exists(folder) ? OutputFolderLock.Acquire(folder) : null;
+                AtomicOutput.Write(folder, Path.GetFileName(full), content);
                 return;
             }
             if (FileKinds.Of(full, followLinks: true) is var target && target is FileKind.Folder or FileKind.Missing)

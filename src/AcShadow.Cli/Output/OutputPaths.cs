@@ -44,9 +44,13 @@ public static class OutputPaths
         : $"--out: {path} is {FileKinds.Describe(kind)}, where acshadow writes a folder: move it away or pass another folder";
 
     /// <summary>An empty --out is a usage mistake (an unquoted empty variable), not a path to resolve.</summary>
-    public static void RequireNamed(string path, string option = "--out")
+    public static void RequireNamed(string path, string option = "--out") =>
+        RequireNamed(path, option, "a folder", "fixtures");
+
+    /// <summary>As above, saying what the option takes: "a folder" (e.g. fixtures) or "a file name" (e.g. doctor.json).</summary>
+    public static void RequireNamed(string path, string option, string what, string example)
     {
         if (string.IsNullOrWhiteSpace(path))
-            throw new CliException(ExitCodes.Usage, $"{option}: the path is empty: pass a folder (e.g. {option} fixtures)");
+            throw new CliException(ExitCodes.Usage, $"{option}: the path is empty: pass {what} (e.g. {option} {example})");
     }
 }

@@ -1,6 +1,5 @@
 using System.Buffers;
 using System.Buffers.Binary;
-using System.Collections.Concurrent;
 using AcShadow.Core.Dat.Binary;
 using Microsoft.Win32.SafeHandles;
 
@@ -11,10 +10,11 @@ namespace AcShadow.Core.Dat;
 /// with a 4-byte offset of the next block; the rest of the block is object data. One archive may be
 /// shared by many threads: a file is read with positional reads on its handle (threads read in parallel),
 /// any other stream under a lock (see <see cref="ReadAt"/>).
-/// The directory is read as it is needed: a lookup before anything asked for the whole list searches the
-/// B-tree from the root (a few nodes, so one `dump` costs the same on a 1 MB and a 200 MB dat); the first
-/// call for the whole list (<see cref="Entries"/>, <see cref="MaxIteration"/>) walks and checks every node,
-/// and lookups use that list from then on.
+/// The directory is walked and checked, every node, when the archive opens: this is the one place a
+/// damaged directory (a root that leaves the blocks unlisted, a branch reachable twice or looping back, a
+/// branch outside the file, an id listed twice) is decided, so every command that opens the dat gives the
+/// same answer for the same damage. (A lookup that searched only its own path would find the object and
+/// pass a dat a listing refuses.) The walk costs a few dozen reads on a 200 MB dat.
 /// </summary>
 public sealed class DatArchive : IDisposable
 {
@@ -28,18 +28,17 @@ public sealed class DatArchive : IDisposable
     private readonly SafeFileHandle? _file;
     private readonly bool _ownsStream;
     private readonly object _gate = new();
-    private readonly Lazy<DirectoryIndex> _directory;
-    private readonly ConcurrentDictionary<int, DatBTreeNode> _searchedNodes = new();
+    private readonly DirectoryIndex _directory;
 
     public string Name { get; }
     public DatHeader Header { get; }
     public long Length { get; }
 
     /// <summary>All directory entries, sorted by id.</summary>
-    public IReadOnlyList<DatDirectoryEntry> Entries => _directory.Value.Entries;
+    public IReadOnlyList<DatDirectoryEntry> Entries => _directory.Entries;
 
-    /// <summary>How the directory B-tree is built: nodes, levels, and which tool's branch fill it carries (walks it all).</summary>
-    public DatDirectoryShape DirectoryShape => _directory.Value.Shape;
+    /// <summary>How the directory B-tree is built: nodes, levels, and which tool's branch fill it carries.</summary>
+    public DatDirectoryShape DirectoryShape => _directory.Shape;
 
     private DatArchive(Stream stream, bool ownsStream, string name)
     {
@@ -52,16 +51,15 @@ public sealed class DatArchive : IDisposable
             throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
         var headerBytes = ReadRaw(0, DatHeader.Size);
         Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
-        _directory = new Lazy<DirectoryIndex>(ReadDirectory, LazyThreadSafetyMode.ExecutionAndPublication);
-        if (Header.RootBlock != 0) Node(Header.RootBlock);
+        _directory = ReadDirectory();
     }
 
-    /// <summary>Every entry, sorted by id, and where each id sits in that list.</summary>
+    /// <summary>Every entry, sorted by id, and the ids alone in the same order (searched by halves).</summary>
     private sealed class DirectoryIndex(DatDirectoryEntry[] entries, DatDirectoryShape shape)
     {
         public DatDirectoryEntry[] Entries { get; } = entries;
         public DatDirectoryShape Shape { get; } = shape;
-        public Dictionary<uint, int> IndexById { get; } = entries.Select((e, i) => (e.Id, i)).ToDictionary(p => p.Id, p => p.i);
+        public uint[] Ids { get; } = Array.ConvertAll(entries, e => e.Id);
     }
 
     /// <summary>Opens a dat from a readable, seekable stream.</summary>
@@ -85,48 +83,12 @@ public sealed class DatArchive : IDisposable
 
     public bool TryGetEntry(uint id, out DatDirectoryEntry entry)
     {
-        if (_directory.IsValueCreated)
-        {
-            var directory = _directory.Value;
-            if (directory.IndexById.TryGetValue(id, out var i)) { entry = directory.Entries[i]; return true; }
-            entry = default;
-            return false;
-        }
-        return TrySearch(id, out entry);
-    }
-
-    /// <summary>
-    /// A B-tree search: in each node the entries are sorted by id and branch i holds the ids between
-    /// entries i-1 and i. Nodes read on the way are kept (the root and upper levels serve every lookup).
-    /// </summary>
-    private bool TrySearch(uint id, out DatDirectoryEntry entry)
-    {
-        entry = default;
-        var offset = Header.RootBlock;
-        if (offset == 0) return false;
-        for (var depth = 0; ; depth++)
-        {
-            // Read through an object lookup, which names the dat file itself: these messages do not repeat it.
-            if (depth > MaxDepth) throw new DatFormatException($"the directory's B-tree is deeper than {MaxDepth} levels (a cycle?)");
-            var node = Node(offset);
-            int low = 0, high = node.Entries.Count - 1;
-            while (low <= high)
-            {
-                var mid = (low + high) >>> 1;
-                var at = node.Entries[mid].Id;
-                if (at == id) { entry = node.Entries[mid]; return true; }
-                if (at < id) low = mid + 1; else high = mid - 1;
-            }
-            if (node.IsLeaf) return false;
-            var parent = offset;
-            offset = node.Branches[low];
-            if (BranchFills.IsNoBranch(offset)) throw new DatFormatException($"B-tree node 0x{parent:X8} has no branch {low} though it is not a leaf");
-        }
+        var i = Array.BinarySearch(_directory.Ids, id);
+        entry = i >= 0 ? _directory.Entries[i] : default;
+        return i >= 0;
     }
 
     private const int MaxDepth = 32;
-
-    private DatBTreeNode Node(int offset) => _searchedNodes.GetOrAdd(offset, ReadNode);
 
     private DatBTreeNode ReadNode(int offset)
     {
@@ -189,12 +151,21 @@ public sealed class DatArchive : IDisposable
         e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException);
 
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
-    public int MaxIteration => Entries.Count == 0 ? 0 : Entries.Max(e => e.Iteration);
+    public int MaxIteration => _directory.Entries.Length == 0 ? 0 : Entries.Max(e => e.Iteration);
 
     private DirectoryIndex ReadDirectory()
     {
         var result = new List<DatDirectoryEntry>();
-        if (Header.RootBlock == 0) return new DirectoryIndex([], new DatDirectoryShape(0, 0, BranchFill.None));
+        if (Header.RootBlock == 0)
+        {
+            // Root 0 is an empty dat, which holds no blocks beyond the header's and the free list's; a
+            // dat with more has lost its root (a damaged header), and listing nothing would pass it as empty.
+            var firstBlock = (DatHeader.Size + (long)Header.BlockSize - 1) / Header.BlockSize * Header.BlockSize;
+            var unlisted = Length - firstBlock - Math.Max(0L, Header.FreeBlockCount) * Header.BlockSize;
+            if (unlisted > 0)
+                throw new DatFormatException($"{Name}: the header's directory root is 0 (an empty dat), but the file holds {unlisted} more bytes of blocks: the header is damaged");
+            return new DirectoryIndex([], new DatDirectoryShape(0, 0, BranchFill.None));
+        }
         var visited = new HashSet<int>();
         int levels = 0;
         var fill = BranchFill.None;
@@ -209,7 +180,7 @@ public sealed class DatArchive : IDisposable
         {
             if (depth > MaxDepth) throw new DatFormatException($"{Name}: B-tree deeper than {MaxDepth} levels (cycle?)");
             if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
-            var node = _searchedNodes.TryGetValue(offset, out var searched) ? searched : ReadNode(offset);
+            var node = ReadNode(offset);
             levels = Math.Max(levels, depth + 1);
             fill = fill.Combine(node.Fill);
             result.AddRange(node.Entries);

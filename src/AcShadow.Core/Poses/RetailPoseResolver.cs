@@ -63,14 +63,24 @@ public static class RetailPoseResolver
                 if (active is not null) state = EnterDefaultState(active, from);
             }
             string? doorState = null;
+            var wanted = options.DoorState;
             if (door is not null && tables.Count > 0)
             {
-                doorState = options.DoorState.Name();
-                if (active is not null && state is { } s) TakeDoorMotion(active, s, options.DoorState, tables[^1].From);
-                else diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
-                    $"the door cannot take its {doorState} motion: its motion table has no default state, so retail refuses every motion"));
+                var taken = active is not null && state is { } s && TakeDoorMotion(active, s, wanted, tables[^1].From);
+                if (active is null || state is null)
+                    diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
+                        $"the door cannot take its {wanted.Name()} motion: its motion table has no default state, so retail refuses every motion"));
+                // Retail refuses the open motion (CMotionInterp fails it), so the door stays as created: closed,
+                // and not ethereal on its account. The file says what retail shows, not what was asked.
+                if (!taken && wanted == DoorState.Open)
+                {
+                    wanted = DoorState.Closed;
+                    diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
+                        "--state open: retail refuses this door's open motion, so it stays closed: written as closed (doorState \"closed\", not ethereal)"));
+                }
+                doorState = wanted.Name();
             }
-            var ethereal = door is not null && options.DoorState == DoorState.Open;
+            var ethereal = door is not null && wanted == DoorState.Open;
             if (ethereal)
                 diagnostics.Add(new(PoseDiagnosticCodes.OpenDoorEthereal,
                     "an open door is ethereal in retail (no collision until it closes): these shapes are for testing, not for blocking"));
@@ -138,23 +148,25 @@ public static class RetailPoseResolver
         /// it; else the cycle under the current style (falling back to the default style) plays after its link,
         /// and the pose it settles in is the cycle's last animation at its starting frame.
         /// </summary>
-        private void TakeDoorMotion(MotionTable table, (uint Style, uint Substate) state, DoorState wanted, string from)
+        /// <summary>Whether the door took the motion (is now in the wanted state's pose).</summary>
+        private bool TakeDoorMotion(MotionTable table, (uint Style, uint Substate) state, DoorState wanted, string from)
         {
             var command = wanted == DoorState.Closed ? MotionCommand.Off : MotionCommand.On;
-            if (state.Substate == command && _current is not null) return;
+            if (state.Substate == command && _current is not null) return true;
             var cycle = table.FindCycle(MotionCommand.Key(state.Style, command)) ?? table.FindCycle(MotionCommand.Key(table.DefaultStyle, command));
             if (cycle is null || cycle.Anims.Count == 0)
             {
                 diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
                     $"MotionTable 0x{table.Id:X8} has no {wanted.Name()} cycle (command 0x{command:X8}) with animations under style 0x{state.Style:X8}: the door keeps its default-state pose"));
-                return;
+                return false;
             }
             for (var i = cycle.Anims.Count - 1; i >= 0; i--)
                 if (Start(cycle.Anims[i], $"MotionTable 0x{table.Id:X8} {wanted.Name()} cycle") is { } settled)
                 {
                     SetCurrent(settled, PoseProvenance.MotionTableSource, table.Id, from, state.Style, command, cycle.Anims[i].AnimId);
-                    return;
+                    return true;
                 }
+            return false;
         }
 
         /// <summary>CSequence::append_animation drops a node whose animation is not there.</summary>

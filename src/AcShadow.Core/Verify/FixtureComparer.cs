@@ -23,10 +23,16 @@ public static class FixtureComparer
                 changed.Add(new ChangedFile(path, [], OnlyLineEndings: true));
                 continue;
             }
-            changed.Add(new ChangedFile(path, JsonDiff.Compare(old, fresh.ToArray())));
+            var differences = JsonDiff.Compare(old, fresh.ToArray());
+            changed.Add(new ChangedFile(path, differences, Reason: differences is { Count: 0 } ? SameValuesReason(old) : null));
         }
         return new FixtureComparison(missing, extra, changed, datDifferences, expected.Count);
     }
+
+    /// <summary>Why a file holding the same JSON values as the regenerated one has other bytes.</summary>
+    private static string SameValuesReason(byte[] old) => old.AsSpan().StartsWith(JsonDiff.Utf8Bom)
+        ? "it starts with a UTF-8 byte-order mark, which acshadow never writes (the JSON after it is the same, and the library reads it)"
+        : "the same JSON values laid out differently (key order, spacing or number spelling): acshadow writes one byte-exact layout, so the file was edited or rewritten by another tool";
 
     /// <summary>True when <paramref name="old"/> is <paramref name="fresh"/> with every LF written CRLF.</summary>
     internal static bool IsCrlfOf(ReadOnlySpan<byte> old, ReadOnlySpan<byte> fresh)

@@ -1,7 +1,10 @@
 namespace AcShadow.Core.Verify;
 
-/// <summary>A file whose bytes differ: the JSON differences (null when a side is not JSON).</summary>
-public sealed record ChangedFile(string Path, IReadOnlyList<JsonDifference>? Differences, bool OnlyLineEndings = false);
+/// <summary>
+/// A file whose bytes differ: the JSON differences (null when a side is not JSON), and, when the JSON values
+/// are the same, why the bytes differ all the same (<see cref="Reason"/>).
+/// </summary>
+public sealed record ChangedFile(string Path, IReadOnlyList<JsonDifference>? Differences, bool OnlyLineEndings = false, string? Reason = null);
 
 /// <summary>
 /// How a fixtures folder compares with a fresh regeneration. Missing: regeneration writes it, the

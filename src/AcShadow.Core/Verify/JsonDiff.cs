@@ -15,14 +15,20 @@ public static class JsonDiff
     private const int MaxValueText = 120;
     private static readonly string[] KeyMembers = ["path", "id"];
 
-    /// <summary>The differences, or null when either side is not JSON.</summary>
+    /// <summary>The UTF-8 byte-order mark, which a text reader (and so the fixtures library) skips.</summary>
+    public static ReadOnlySpan<byte> Utf8Bom => [0xEF, 0xBB, 0xBF];
+
+    /// <summary>
+    /// The differences, or null when either side is not JSON. A leading byte-order mark is skipped, as the
+    /// fixtures library (which reads text) skips it: a file the library reads is JSON here too.
+    /// </summary>
     public static IReadOnlyList<JsonDifference>? Compare(byte[] oldJson, byte[] newJson)
     {
         JsonDocument? a = null, b = null;
         try
         {
-            a = JsonDocument.Parse(oldJson);
-            b = JsonDocument.Parse(newJson);
+            a = JsonDocument.Parse(WithoutBom(oldJson));
+            b = JsonDocument.Parse(WithoutBom(newJson));
         }
         catch (JsonException)
         {
@@ -45,6 +51,8 @@ public static class JsonDiff
             return differences;
         }
     }
+
+    private static ReadOnlyMemory<byte> WithoutBom(byte[] json) => json.AsSpan().StartsWith(Utf8Bom) ? json.AsMemory(3) : json;
 
     private static void Walk(string path, JsonElement a, JsonElement b, List<JsonDifference> diffs)
     {

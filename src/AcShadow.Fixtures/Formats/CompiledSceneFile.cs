@@ -50,7 +50,7 @@ internal sealed record CompiledSceneFile(uint LandblockId, Vector3? WorldOrigin,
         {
             var frame = Prop(o, "landblockFrame");
             var position = Vec(Prop(frame, "origin"));
-            var rotation = Quat(Prop(frame, "orientation"));
+            var rotation = Rotation(Prop(frame, "orientation"), "an object's landblockFrame orientation");
             var model = Prop(o, "model");
             var shapes = Arr(o, "shapes").Select(ReadShape).ToArray();
             var id = JsonIds.TryParse(Str(o, "id"), out var parsed) ? parsed : throw new FormatException("id is not a hex id");
@@ -71,7 +71,7 @@ internal sealed record CompiledSceneFile(uint LandblockId, Vector3? WorldOrigin,
             var cellId = JsonIds.TryParse(Str(e, "cellId"), out var parsed) ? parsed : throw new FormatException("cellId is not a hex id");
             var frame = Prop(e, "landblockFrame");
             var position = Vec(Prop(frame, "origin"));
-            var rotation = Quat(Prop(frame, "orientation"));
+            var rotation = Rotation(Prop(frame, "orientation"), "a cell's landblockFrame orientation");
             var file = Prop(e, "file");
             cells.Add(file.ValueKind == JsonValueKind.Null
                 ? new Cell(cellId, null, position, rotation, null)
@@ -95,10 +95,14 @@ internal sealed record CompiledSceneFile(uint LandblockId, Vector3? WorldOrigin,
                 return new CylinderShape(source, Vec(Prop(s, "base")), Float(s, "radius"), Float(s, "height"));
         }
         var pose = Prop(s, "pose");
-        var partPose = new PartPose(Vec(Prop(pose, "position")), Quat(Prop(pose, "orientation")), Float(pose, "scale"));
+        var scale = Float(pose, "scale");
+        // A part scaled by 0 or less has no (or an inside-out) shape: no file `scene` writes holds one.
+        if (!(float.IsFinite(scale) && scale > 0f))
+            throw new FormatException($"a part's pose scale must be a positive number, not {scale.ToString(System.Globalization.CultureInfo.InvariantCulture)}");
+        var partPose = new PartPose(Vec(Prop(pose, "position")), Rotation(Prop(pose, "orientation"), "a part's pose orientation"), scale);
         return type switch
         {
-            "box" => new BoxShape(source, partPose, new OrientedBox(Vec(Prop(s, "center")), Quat(Prop(s, "axes")), Vec(Prop(s, "halfExtents")))),
+            "box" => new BoxShape(source, partPose, new OrientedBox(Vec(Prop(s, "center")), Rotation(Prop(s, "axes"), "a box's axes"), Vec(Prop(s, "halfExtents")))),
             "hull" => new HullShape(source, partPose, Hull(s)),
             "bsp" => new BspShape(source, partPose, Str(s, "file"),
                 s.TryGetProperty("gfxObjId", out var g) && g.ValueKind == JsonValueKind.String && JsonIds.TryParse(g.GetString(), out var gfx) ? gfx : null),

@@ -237,7 +237,8 @@ public class BatchCommandTests
     public void Landblock_with_a_dat_but_no_cell_dat_is_a_usage_error()
     {
         using var dats = SampleDat.WriteToTempFolder();
-        var (run, dir) = RunBatch("--landblock", "0xA9B4", "--dat", dats.Path);
+        // The portal dat's file: a folder holding both dats gives the cell dat too (issue 32 item 16).
+        var (run, dir) = RunBatch("--landblock", "0xA9B4", "--dat", Path.Combine(dats.Path, "client_portal.dat"));
         using (dir)
         {
             Assert.Equal(2, run.ExitCode);

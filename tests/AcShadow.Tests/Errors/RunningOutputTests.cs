@@ -171,8 +171,8 @@ public class RunningOutputTests
         Assert.DoesNotContain(Directory.GetFiles(outDir, "*", SearchOption.AllDirectories), f => f.EndsWith(".tmp", StringComparison.Ordinal));
 
         var verify = CliRun.Of("verify", "--fixtures", outDir, "--dat", dats);
-        Assert.Equal(5, verify.ExitCode);
-        Assert.Contains("is an incomplete run", Assert.Single(verify.ErrorLines));
+        Assert.Equal(2, verify.ExitCode);
+        Assert.Contains("an incomplete run", Assert.Single(verify.ErrorLines));
     }
 
     [Theory]
@@ -197,7 +197,10 @@ public class RunningOutputTests
 
         Assert.Equal(130, code);
         var line = Assert.Single(Lines(error), l => l.StartsWith("acshadow: interrupted", StringComparison.Ordinal));
-        var said = System.Text.RegularExpressions.Regex.Match(line, @"^acshadow: interrupted: (\d+) failure map\(s\) of 400 object\(s\) were written to .*the folder is incomplete");
+        // Chart's own line when it stops at the next model; when that model takes longer than the grace a
+        // signal gives (a loaded machine), the stop from outside, whose line counts the files the same way.
+        var said = System.Text.RegularExpressions.Regex.Match(line,
+            @"^acshadow: interrupted: (\d+) (failure map\(s\) of 400 object\(s\) were written to .*the folder is incomplete|file\(s\) \(\d+ bytes\) were written to .*each whole, and no temporary file is left)");
         Assert.True(said.Success, line);
         Assert.DoesNotContain(Lines(error), l => l.TrimStart().StartsWith("at ", StringComparison.Ordinal));
         // Only whole files: the maps it said it wrote (the earlier run's own map among them or not), no table, no temporary.

@@ -67,16 +67,15 @@ public class PoseCommandTests
         Assert.Equal("0x4000000B", open.Pose.GetProperty("substate").GetString());
         Assert.Contains(PoseDiagnosticCodes.OpenDoorEthereal, open.Codes);
 
-        // --pose placement ignores the state: the placement frame has no open leaf.
-        var placed = Dump(Door, "--state", "open", "--pose", "placement");
-        AssertAt(placed.Set.Shapes[0], Vector3.Zero, Quaternion.Identity);
+        // --pose placement has no motion to take: the state is refused, not silently ignored (issue 32 item 14).
+        using var outDir = new TempDir();
+        Assert.Equal(2, CliRun.Of("dump", "--setup", Door, "--state", "open", "--pose", "placement", "--out", outDir.Path).ExitCode);
     }
 
     [Theory]
     // The catalog's table for this door names Off as the default but has no Off cycle.
     [InlineData("0x0200024F", new string[0], new[] { PoseDiagnosticCodes.NoDefaultState, PoseDiagnosticCodes.DoorMotion })]
-    // A motion table the dat does not have.
-    [InlineData("0x0200024F", new[] { "--motion-table", "0x09007777" }, new[] { PoseDiagnosticCodes.MissingMotionTable, PoseDiagnosticCodes.DoorMotion })]
+    // (A --motion-table the dat does not have is exit 4 now: Cli/PoseOptionTests.)
     public void Each_malformed_case_gives_its_diagnostics_and_the_placement_pose(string setup, string[] options, string[] codes)
     {
         var dump = Dump(setup, options);

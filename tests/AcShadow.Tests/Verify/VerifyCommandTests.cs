@@ -114,7 +114,10 @@ public class VerifyCommandTests
         using var dats = SampleDat.WriteToTempFolder();
         using var dir = Fixtures("--landblock", "0xA9B4", "--dat", dats.Path, "--cell-dat", dats.Path);
         Assert.Equal(0, CliRun.Of("verify", "--fixtures", dir.Path, "--dat", dats.Path, "--cell-dat", dats.Path).ExitCode);
-        var run = CliRun.Of("verify", "--fixtures", dir.Path, "--dat", dats.Path);
+        // The folder --dat names holds the cell dat too: found there (issue 32 item 16).
+        Assert.Equal(0, CliRun.Of("verify", "--fixtures", dir.Path, "--dat", dats.Path).ExitCode);
+        // The portal dat's file alone gives no cell dat.
+        var run = CliRun.Of("verify", "--fixtures", dir.Path, "--dat", Path.Combine(dats.Path, "client_portal.dat"));
         Assert.Equal(2, run.ExitCode);
         Assert.Contains("pass --cell-dat", Assert.Single(run.ErrorLines));
     }

@@ -220,7 +220,7 @@ public sealed class CompiledSceneViewTests
         }
     }
 
-    [Fact]
+    [RasterisingFact]
     public void The_svg_rasterises_with_the_box_and_the_hull_in_their_colours_where_the_file_puts_them()
     {
         var json = HandBuilt();

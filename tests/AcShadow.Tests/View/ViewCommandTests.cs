@@ -223,7 +223,7 @@ public sealed class ViewCommandTests
         Assert.Equal(3 * passes + 1, Regex.Matches(svg, "<polygon [^>]*fill=\"#D55E00\" stroke=\"#ffffff\"").Count);
     }
 
-    [Fact]
+    [RasterisingFact]
     public void The_svg_rasterises_with_the_door_leaf_drawn_where_the_shadow_file_puts_it()
     {
         using var dir = new TempDir();
