@@ -111,5 +111,11 @@ public class ChartCommandTests
             Assert.Equal(File.ReadAllBytes(Path.Combine(one.Path, name)), File.ReadAllBytes(Path.Combine(two.Path, name)));
         var fallback = File.ReadAllLines(Path.Combine(one.Path, "movement-chart.csv")).Single(l => l.StartsWith("0x020019FF,fallback-cylinder,", StringComparison.Ordinal));
         Assert.NotEqual("0", fallback.Split(',')[5]);
+
+        using var unknown = new TempDir();
+        var walk = CliRun.Of("chart", "--setup", "0x020019FF", "--spacing", "1", "--movement", "--walk", "closed/nowhere", "--out", unknown.Path, "--quiet");
+        Assert.True(walk.ExitCode == 0, walk.Error);
+        Assert.Contains("warning: --walk closed/nowhere: no charted object has that case", walk.Error);
+        Assert.DoesNotContain(unknown.Files(), f => f.StartsWith("movement-walk-", StringComparison.Ordinal));
     }
 }
