@@ -15,8 +15,8 @@ namespace AcShadow.Analysis.Chart;
 /// </summary>
 internal static class ChartRunner
 {
-    /// <summary>The code of a model that failed to prepare an object (<see cref="ChartDiagnosticCodes.ModelFailed"/>).</summary>
-    public const string ModelFailed = ChartDiagnosticCodes.ModelFailed;
+    /// <summary>The code of a model that failed to prepare an object (<see cref="ModelDiagnosticCodes.ModelFailed"/>).</summary>
+    public const string ModelFailed = ModelDiagnosticCodes.ModelFailed;
 
     /// <summary>
     /// Charts <paramref name="count"/> subjects, made one at a time by <paramref name="subjectAt"/> (null: skipped),

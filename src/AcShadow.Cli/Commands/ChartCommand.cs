@@ -144,7 +144,7 @@ public static class ChartCommand
         var eta = new WorkWeightedEta(silent ? [] : ChartWork.Of(dat.Portal, order, bareGfxObjs));
         var progress = new ProgressReporter(console.Error, console.IsTerminal, silent, "objects charted", "chart", eta.Remaining);
         var charting = Stopwatch.StartNew();
-        int charted = 0, mapsWritten = 0, movementCases = 0, movementMaps = 0;
+        int charted = 0, mapsWritten = 0, movementCases = 0, movementMaps = 0, walksDrawn = 0;
         long bytes = 0, probes = 0;
         var cheapest = new List<string>();
         var warnings = new WarningSummary(console.Error);
@@ -179,6 +179,7 @@ public static class ChartCommand
                         mapsWritten++;
                         if (chart.Movement is { } moved && movementFiles is not null)
                         {
+                            if (moved.Walk is not null) walksDrawn++;
                             foreach (var file in movementFiles.Add(moved))
                             {
                                 bytes += folder.Write(file.RelativePath, file.Content);
@@ -244,6 +245,8 @@ public static class ChartCommand
         foreach (var s in summaries)
             w.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"  {s.Model,-18} {s.AgreementPercent,8:0.000}% agree  {s.FalsePass,7} false pass  {s.FalseBlock,7} false block  {s.Timing.MedianNs,8:0.0} ns/query median"));
+        if (movementRequest?.Walk is { } walkId && walksDrawn == 0)
+            console.Error.WriteLine($"warning: --walk {walkId}: no charted object has that case, so no walk was drawn (a case id reads like closed/out-in/lat+0.450/hdg+00/walk; movement-chart.csv's first_diverging_case column shows some)");
         if (movementSummaries is not null)
         {
             w.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  movement: {movementCases} walk(s) per model; verdicts over non-fragile walks (fragile counted apart), time per transition"));

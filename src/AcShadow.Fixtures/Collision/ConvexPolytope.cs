@@ -21,8 +21,11 @@ internal sealed class ConvexPolytope : ISphereOverlap
     public IReadOnlyList<Vector3> Vertices { get; }
     public IReadOnlyList<CompiledPolygon> Faces => _faces;
 
-    /// <summary>The solid as a one-leaf BSP whose leaf sphere is this polytope's bounding sphere (<see cref="CompiledBsp.SolidLeaf"/>).</summary>
-    internal CompiledBsp ToSolidLeaf(uint id) => CompiledBsp.SolidLeaf(id, _faces, _boundCenter, _boundRadius);
+    /// <summary>
+    /// The solid as a one-leaf BSP whose leaf sphere is this polytope's bounding sphere (<see cref="CompiledBsp.SolidLeaf"/>),
+    /// its faces in <paramref name="order"/> (default: <see cref="Faces"/>' order).
+    /// </summary>
+    internal CompiledBsp ToSolidLeaf(uint id, IReadOnlyList<CompiledPolygon>? order = null) => CompiledBsp.SolidLeaf(id, order ?? _faces, _boundCenter, _boundRadius);
 
     private NearestPolygonIndex? _nearest;
 

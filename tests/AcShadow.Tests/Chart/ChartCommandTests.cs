@@ -81,10 +81,41 @@ public class ChartCommandTests
     [InlineData(2, "spacing must be at least 0.01 m", "chart", "--setup", "0x020019FF", "--spacing", "0.001", "--out", "x")]
     [InlineData(4, "Setup 0x0200ABCD is not in", "chart", "--setup", "0x0200ABCD", "--out", "x")]
     [InlineData(2, "--no-cells applies to a landblock's scene", "chart", "--setup", "0x020019FF", "--no-cells", "--out", "x")]
+    [InlineData(2, "--mover and --walk apply to --movement", "chart", "--setup", "0x020019FF", "--walk", "closed/out-in/lat+0.450/hdg+00/walk", "--out", "x")]
+    [InlineData(4, "--mover: Setup 0x0200ABCD is not in", "chart", "--setup", "0x020019FF", "--movement", "--mover", "0x0200ABCD", "--out", "x")]
     public void Usage_and_missing_setups_are_one_line_errors(int code, string message, params string[] args)
     {
         var run = CliRun.Of(args);
         Assert.Equal(code, run.ExitCode);
         Assert.Contains(message, run.Error);
+    }
+
+    [Fact]
+    public void Chart_movement_writes_the_movement_files_and_they_are_the_same_at_one_and_two_jobs_but_for_the_time_column()
+    {
+        using var one = new TempDir();
+        using var two = new TempDir();
+        foreach (var (dir, jobs) in new[] { (one, "1"), (two, "2") })
+        {
+            var run = CliRun.Of("chart", "--setup", "0x020019FF", "--setup", "0x02001000", "--spacing", "1", "--movement", "--jobs", jobs, "--out", dir.Path, "--quiet");
+            Assert.True(run.ExitCode == 0, run.Error);
+            Assert.Contains("movement: 840 walk(s) per model", run.Out);
+        }
+        foreach (var name in new[] { "movement-chart.csv", "movement-summary.csv" })
+        {
+            // Everything but the last column (ns_per_transition, a measurement).
+            static string[] Masked(string path) => [.. File.ReadAllLines(path).Select(l => l[..l.LastIndexOf(',')])];
+            Assert.Equal(Masked(Path.Combine(one.Path, name)), Masked(Path.Combine(two.Path, name)));
+        }
+        foreach (var name in new[] { "movement-map-0x020019FF.svg", "movement-map-0x02001000.svg" })
+            Assert.Equal(File.ReadAllBytes(Path.Combine(one.Path, name)), File.ReadAllBytes(Path.Combine(two.Path, name)));
+        var fallback = File.ReadAllLines(Path.Combine(one.Path, "movement-chart.csv")).Single(l => l.StartsWith("0x020019FF,fallback-cylinder,", StringComparison.Ordinal));
+        Assert.NotEqual("0", fallback.Split(',')[5]);
+
+        using var unknown = new TempDir();
+        var walk = CliRun.Of("chart", "--setup", "0x020019FF", "--spacing", "1", "--movement", "--walk", "closed/nowhere", "--out", unknown.Path, "--quiet");
+        Assert.True(walk.ExitCode == 0, walk.Error);
+        Assert.Contains("warning: --walk closed/nowhere: no charted object has that case", walk.Error);
+        Assert.DoesNotContain(unknown.Files(), f => f.StartsWith("movement-walk-", StringComparison.Ordinal));
     }
 }

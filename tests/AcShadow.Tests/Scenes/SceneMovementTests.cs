@@ -31,17 +31,29 @@ public class SceneMovementTests
     }
 
     [Fact]
-    public void The_columns_hull_is_exact_on_every_probe_but_slides_round_a_corner_retail_stops_at_so_retail_is_kept()
+    public void The_columns_hull_walks_as_its_tree_does_and_is_chosen_with_its_walks_as_evidence()
     {
-        var report = Walked.Value;
-        var column = report.Compiled[(SceneObjectKind.GfxObj, SampleSpecAuthor.Column)];
-        var hull = column.Candidates.Single(k => k.Model == "part-hulls");
-        Assert.Equal((0, 0), (hull.FalsePass, hull.FalseBlock));
-        Assert.False(hull.Accepted);
-        Assert.True(hull.Movement!.FalsePasses > 0);
-        Assert.Equal("retail", column.Model);
-        // Without movement the probes alone choose the hull (SceneCompileTests).
-        Assert.Equal("part-hulls", SceneCompileTests.Exact.Value.Compiled[(SceneObjectKind.GfxObj, SampleSpecAuthor.Column)].Model);
+        var column = Walked.Value.Compiled[(SceneObjectKind.GfxObj, SampleSpecAuthor.Column)];
+        Assert.Equal("part-hulls", column.Model);
+        var hull = column.Candidates[^1].Movement!;
+        Assert.Equal(224, hull.Cases);
+        Assert.Equal(hull.Cases - hull.Fragile, hull[Analysis.Chart.Movement.MovementVerdict.Agree]);
+    }
+
+    [Fact]
+    public void A_model_the_probes_accept_but_a_walk_gets_past_retail_is_refused()
+    {
+        // At 100 % tolerance the probes accept any model without a false pass: part-spheres on every object.
+        var tolerant = SceneCompileTests.Compile(new SceneCompileOptions { TolerancePercent = 100, Movement = SampleMovementChart.Options with { Walk = null } });
+        var probesOnly = SceneCompileTests.Compile(new SceneCompileOptions { TolerancePercent = 100 });
+        Assert.Contains(probesOnly.Compiled.Values, c => c.Model == "part-spheres");
+        Assert.DoesNotContain(tolerant.Compiled.Values, c => c.Model == "part-spheres");
+        var door = tolerant.Compiled[(SceneObjectKind.Setup, SampleSpecAuthor.DoorSetup)];
+        var spheres = door.Candidates.Single(k => k.Model == "part-spheres");
+        Assert.Equal(0, spheres.FalsePass);
+        Assert.False(spheres.Accepted);
+        Assert.True(spheres.Movement!.FalsePasses > 0);
+        Assert.All(tolerant.Compiled.Values.Where(c => c.Candidates.Count > 0), c => Assert.Equal(0, c.Candidates[^1].Movement!.FalsePasses));
     }
 
     [Fact]

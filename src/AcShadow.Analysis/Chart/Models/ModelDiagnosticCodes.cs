@@ -4,7 +4,7 @@ namespace AcShadow.Analysis.Chart.Models;
 public static class ModelDiagnosticCodes
 {
     /// <summary>A BSP part whose physics vertices give no solid for a fitted model (all on a line or in a point): that model leaves it out.</summary>
-    /// <summary>A model threw while preparing an object: it answers "nothing collides" there.</summary>
+    /// <summary>A model threw while preparing an object: it answers "nothing collides" there, so every blocked probe is its false pass.</summary>
     public const string ModelFailed = "model-failed";
 
     public const string UnfittablePart = "unfittable-part";

@@ -90,7 +90,7 @@ internal sealed class ObjectWalks
         {
             var inState = s == 0 && prepared is not null ? prepared : ModelPreparation.Prepare(model, _subjects[s]);
             if (s == 0) shapes = inState.Shapes.Count;
-            obstacles[s] = ModelObstacles.Of(inState, _ethereal[s]);
+            obstacles[s] = ModelObstacles.Of(inState, _ethereal[s], _subjects[s].Bsps);
         }
         var frames = new IReadOnlyList<MovementFrame>[Cases.Count];
         long RunAll()
