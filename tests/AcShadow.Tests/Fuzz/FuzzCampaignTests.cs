@@ -35,7 +35,8 @@ public class FuzzCampaignTests
 
         Assert.Equal(Cases, result.Cases);
         Assert.Equal(Cases / DeepEvery, result.DeepCases);
-        Assert.Equal(["batch", "chart", "dump", "verify"], result.CommandTimes.Keys.Order(StringComparer.Ordinal).ToArray());
+        // Deep cases also re-run batch --incremental over the damaged folder and verify it (CaseRunner.Repair).
+        Assert.Equal(["batch", "batch (re-run)", "chart", "dump", "verify", "verify (re-run)"], result.CommandTimes.Keys.Order(StringComparer.Ordinal).ToArray());
         Assert.True(result.FailedCases == 0, string.Join("\n", result.Failures.Select(f =>
             $"{f.Failure.Signature} ({result.FailureCounts[f.Failure.Signature]} cases); first: {f.Input.Description}\n{f.Failure.Detail}")));
         // The campaign reaches both the happy path and the refusals: a campaign that never damaged
