@@ -1,18 +1,20 @@
 using System.Numerics;
 using AcShadow.Fixtures.Bsp;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Fixtures.Collision;
 
 /// <summary>
 /// The collision reference for an indoor cell, as retail answers it for cells (EnvCell::find_env_collisions,
 /// ported by ACE as EnvCell.FindEnvCollisions): the query sphere is moved into the cell's own frame
-/// (CSpherePath::CacheLocalSpaceSphere with the cell's position and scale 1: offset, then the inverse
-/// rotation) and asked of the cell structure's PhysicsBSP, the same tree walk as a part's
+/// (CSpherePath::CacheLocalSpaceSphere with the cell's position and scale 1: Frame::globaltolocal by the
+/// transpose of the matrix Frame::cache builds from the stored, unnormalised quaternion,
+/// <see cref="ClientFrameMatrix"/>) and asked of the cell structure's PhysicsBSP, the same tree walk as a part's
 /// (<see cref="BspSphereQuery"/>). A cell has no broad-phase sphere of its own beyond its tree's root.
 /// </summary>
 internal sealed class CellOverlapQuery : ISphereOverlap
 {
-    private readonly PartPose _frame;
+    private readonly ClientFrameMatrix _frame;
     private readonly BspSphereQuery _bsp;
 
     /// <param name="physics">The cell structure's physics polygons and PhysicsBSP, in the cell's own frame.</param>
@@ -23,20 +25,19 @@ internal sealed class CellOverlapQuery : ISphereOverlap
         var length = orientation.Length();
         if (!float.IsFinite(length) || length < 1e-6f || !Vec.IsFinite(origin))
             throw new ArgumentException($"a cell frame needs a finite origin and a non-zero rotation; got {origin}, {orientation}");
-        _frame = new PartPose(origin, Quaternion.Multiply(orientation, 1f / length), 1f);
+        _frame = ClientFrameMatrix.From(new Frame(origin, orientation));
         _bsp = BspSphereQuery.From(physics);
     }
 
     /// <summary>Does a sphere at this centre (same frame as the cell's origin) touch one of the cell's physics polygons?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {
-        var (local, r) = _frame.ToLocal(center, radius);
-        return _bsp.Overlaps(local, r);
+        return _bsp.Overlaps(_frame.GlobalToLocal(center), radius);
     }
 
     /// <summary>A point in the cell's own frame.</summary>
-    public Vector3 ToCell(Vector3 point) => _frame.ToLocal(point, 0f).Center;
+    public Vector3 ToCell(Vector3 point) => _frame.GlobalToLocal(point);
 
     /// <summary>A point of the cell's own frame in the frame of its origin.</summary>
-    public Vector3 FromCell(Vector3 local) => _frame.ToEntity(local);
+    public Vector3 FromCell(Vector3 local) => _frame.LocalToGlobal(local);
 }

@@ -11,10 +11,9 @@ public readonly record struct Frame(Vector3 Position, Quaternion Rotation)
 {
     public static Frame Identity { get; } = new(Vector3.Zero, Quaternion.Identity);
 
-    /// <summary>A point of this frame in the outer one: turned by <see cref="Rotation"/> (a unit quaternion), then offset.</summary>
-    internal Vector3 Apply(Vector3 local)
-    {
-        var turned = QuaternionRotation.Rotate(Rotation, local);
-        return new Vector3(turned.X + Position.X, turned.Y + Position.Y, turned.Z + Position.Z);
-    }
+    /// <summary>
+    /// A point of this frame in the outer one, as the client moves it (Frame::localtoglobal by the matrix
+    /// Frame::cache builds from the stored quaternion, <see cref="ClientFrameMatrix"/>).
+    /// </summary>
+    internal Vector3 Apply(Vector3 local) => ClientFrameMatrix.From(this).LocalToGlobal(local);
 }
