@@ -6,22 +6,21 @@ namespace AcShadow.Fixtures.Collision;
 /// <summary>A posed part: where its GfxObj sits in entity space, how it is turned, its uniform scale.</summary>
 internal readonly record struct PartPose(Vector3 Position, Quaternion Rotation, float Scale)
 {
+    /// <summary>The part's frame as the client moves points with it (Frame::cache from the stored quaternion).</summary>
+    public ClientFrameMatrix Matrix => ClientFrameMatrix.From(new Frame(Position, Rotation));
+
     /// <summary>
-    /// The query sphere in the part's own space (CSpherePath::CacheLocalSpaceSphere): offset from the part,
-    /// turned by the inverse rotation, then multiplied by 1 / scale, centre and radius alike.
+    /// The query sphere in the part's own space (SPHEREPATH::cache_localspace_sphere): Frame::globaltolocal
+    /// into the part's frame, then each stored component and the radius multiplied by the float 1 / scale.
     /// </summary>
     public (Vector3 Center, float Radius) ToLocal(Vector3 center, float radius)
     {
         var invScale = 1f / Scale;
-        var local = QuaternionRotation.RotateInverse(Rotation, Vec.Sub(center, Position));
+        var local = Matrix.GlobalToLocal(center);
         return (new Vector3(local.X * invScale, local.Y * invScale, local.Z * invScale), radius * invScale);
     }
 
-    /// <summary>A part-local point back in entity space.</summary>
-    public Vector3 ToEntity(Vector3 local)
-    {
-        var scaled = new Vector3(local.X * Scale, local.Y * Scale, local.Z * Scale);
-        var turned = QuaternionRotation.Rotate(Rotation, scaled);
-        return new Vector3(turned.X + Position.X, turned.Y + Position.Y, turned.Z + Position.Z);
-    }
+    /// <summary>A part-local point back in entity space: scaled, then Frame::localtoglobal.</summary>
+    public Vector3 ToEntity(Vector3 local) =>
+        Matrix.LocalToGlobal(new Vector3(local.X * Scale, local.Y * Scale, local.Z * Scale));
 }

@@ -23,9 +23,11 @@ internal sealed class ObjectCollider
         var parts = new List<BspMovementCollider>();
         var cylinders = new List<CylSphereCollider>();
         var spheres = new List<SphereCollider>();
+        var frame = ClientFrameMatrix.From(new Frame(obstacle.Position, obstacle.Rotation));
         foreach (var shape in obstacle.Shapes)
         {
-            var position = obstacle.Position + QuaternionRotation.Rotate(obstacle.Rotation, MoveMath.Scale(shape.LocalPosition, scale));
+            // Frame::combine(f1, AFrame f2, scale): the part's origin scaled first, then f1's localtoglobal.
+            var position = frame.LocalToGlobal(MoveMath.Scale(shape.LocalPosition, scale));
             switch (shape.CollisionType)
             {
                 case CollisionType.Bsp when shape.GfxObjId is { } id && obstacle.Bsps.TryGetValue(id, out var bsp):
