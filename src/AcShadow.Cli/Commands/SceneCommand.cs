@@ -74,27 +74,16 @@ public static class SceneCommand
         return command;
     }
 
-    /// <summary>The BSP dumps a compiled-scene.json names (its "file" values), when it is a regular file that reads as JSON; else none.</summary>
+    /// <summary>The BSP dumps a compiled-scene.json names, read by the package's one reader; none when it is not a regular file or does not read as one.</summary>
     private static IReadOnlyList<string> DumpsNamedBy(string scenePath)
     {
         if (FileKinds.Of(scenePath) != FileKind.Regular) return [];
         try
         {
-            using var doc = JsonDocument.Parse(File.ReadAllBytes(scenePath));
-            var named = new List<string>();
-            void Walk(JsonElement e)
-            {
-                if (e.ValueKind == JsonValueKind.Object)
-                    foreach (var p in e.EnumerateObject())
-                        if (p.Name == "file" && p.Value.ValueKind == JsonValueKind.String) named.Add(p.Value.GetString()!);
-                        else Walk(p.Value);
-                else if (e.ValueKind == JsonValueKind.Array)
-                    foreach (var item in e.EnumerateArray()) Walk(item);
-            }
-            Walk(doc.RootElement);
-            return [.. named.Where(f => RelativeOutputPath.StaysInside(f) && f.EndsWith(".bsp.json", StringComparison.Ordinal)).Distinct()];
+            var scene = CompiledSceneFile.Read(File.ReadAllText(scenePath));
+            return [.. scene.DumpFiles().Where(f => RelativeOutputPath.StaysInside(f) && f.EndsWith(".bsp.json", StringComparison.Ordinal)).Distinct()];
         }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException or InvalidOperationException)
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or JsonException or InvalidOperationException or FormatException or KeyNotFoundException)
         {
             return [];
         }

@@ -40,6 +40,10 @@ internal sealed record CompiledSceneFile(uint LandblockId, Vector3? WorldOrigin,
     /// <summary>A part answered by its retail BSP, read from <see cref="File"/>; <see cref="GfxObjId"/> as the file gives it (null: not given as a hex id).</summary>
     internal sealed record BspShape(string? Source, PartPose Pose, string File, uint? GfxObjId) : PartShape("bsp", Source, Pose);
 
+    /// <summary>The BSP dumps this scene names: its objects' retail parts, then its cells'.</summary>
+    public IEnumerable<string> DumpFiles() =>
+        Objects.SelectMany(o => o.Shapes.OfType<BspShape>().Select(b => b.File)).Concat(Cells.Select(c => c.File).OfType<string>());
+
     public static CompiledSceneFile Read(string json)
     {
         using var doc = JsonDocument.Parse(json);
