@@ -1,12 +1,14 @@
 using System.Numerics;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Fixtures;
 
 /// <summary>
 /// A <see cref="SetupFixture"/> at a world position and rotation. A world-space query sphere is moved into
-/// the entity's frame (offset, then the inverse rotation; the radius is unchanged) and asked there, as
-/// the client transforms the moving sphere into each object's frame.
+/// the entity's frame (Frame::globaltolocal; the radius is unchanged) and asked there, as the client transforms
+/// the moving sphere into each object's frame. The rotation is kept as given when Frame::IsValid accepts it (the
+/// client does not normalise a frame it reads), else normalised as Frame::set_rotate does.
 /// </summary>
 public sealed class PlacedFixture
 {
@@ -22,7 +24,7 @@ public sealed class PlacedFixture
         if (!float.IsFinite(length) || length < 1e-6f || !float.IsFinite(position.X + position.Y + position.Z))
             throw new ArgumentException($"a world frame needs a finite position and a non-zero rotation; got {position}, {rotation}");
         Fixture = fixture;
-        _frame = new PartPose(position, Quaternion.Multiply(rotation, 1f / length), 1f);
+        _frame = new PartPose(position, ClientFrameMatrix.PlacedRotation(rotation), 1f);
     }
 
     /// <summary>Does a sphere at this world-space centre and radius touch the placed object?</summary>

@@ -32,6 +32,7 @@ public static class FootprintCoverage
                 foreach (var vid in polygon.VertexIds)
                 {
                     if (vid < 0 || !part.GfxObj.Vertices.TryGetValue((ushort)vid, out var v)) { points.Clear(); break; }
+                    // An audit measure rounded to 4 decimals, no client counterpart: the plain rotation of the posed part.
                     var p = part.Position + QuaternionRotation.Rotate(part.Rotation, v * part.Scale);
                     points.Add((p.X, p.Y));
                 }

@@ -19,6 +19,7 @@ public static class HeightCoverage
                 foreach (var vid in polygon.VertexIds)
                 {
                     if (vid < 0 || !part.GfxObj.Vertices.TryGetValue((ushort)vid, out var v)) continue;
+                    // An audit measure rounded to 4 decimals, no client counterpart: the plain rotation of the posed part.
                     double z = (part.Position + QuaternionRotation.Rotate(part.Rotation, v * part.Scale)).Z;
                     min = Math.Min(min, z);
                     max = Math.Max(max, z);

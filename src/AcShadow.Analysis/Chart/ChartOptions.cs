@@ -60,6 +60,15 @@ public sealed record ChartOptions
     /// <summary>How far short of and past each boundary a stability probe sits (metres): half of retail's ε.</summary>
     public float StabilityOffset { get; init; } = 1e-4f;
 
+    /// <summary>
+    /// The tie band (metres): how far from the client's answer acshadow's own arithmetic can put a point in a part's
+    /// frame. Cells and parts move points bit for bit as the client does, but a placed object's part is reached in two
+    /// steps (landblock to entity, entity to part) where the client takes one (the part's Frame::combine frame); the two
+    /// differ by at most 1.1e-5 m (docs/chart.md, "Moving points between frames"). A boundary within this of a probe is a
+    /// tie whose answer acshadow cannot promise, so <see cref="StabilityOffset"/> must be more than it.
+    /// </summary>
+    public const float FrameArithmeticTie = 2e-5f;
+
     /// <summary>Every mover radius probed: <see cref="ProbeRadius"/> first, then <see cref="MoverRadii"/> not already listed.</summary>
     public IReadOnlyList<float> Radii => [.. new[] { ProbeRadius }.Concat(MoverRadii).Distinct()];
 
@@ -75,7 +84,8 @@ public sealed record ChartOptions
         if (WalkHeight is { } w && !float.IsFinite(w)) return $"walking height must be a number of metres, not {F(w)}";
         foreach (var r in MoverRadii)
             if (!(float.IsFinite(r) && r > 0f)) return $"mover radius must be a positive number of metres, not {F(r)}";
-        if (!float.IsFinite(StabilityOffset) || StabilityOffset <= 0f) return $"stability offset must be a positive number of metres, not {F(StabilityOffset)}";
+        if (!float.IsFinite(StabilityOffset) || StabilityOffset <= FrameArithmeticTie)
+            return $"stability offset must be more than {F(FrameArithmeticTie)} m (the tie band of frame arithmetic, docs/chart.md), not {F(StabilityOffset)}";
         if (!float.IsFinite(DoorwayStep) || DoorwayStep < 0.005f) return $"doorway step must be at least 0.005 m, not {F(DoorwayStep)}";
         if (DoorwayOffsets.Any(o => !float.IsFinite(o))) return "doorway offsets must be numbers";
         if (MaxGridProbes < 1 || MaxStabilityProbes < 1 || TimingProbes < 1 || TimingBatches < 1 || WarmupPasses < 0 || FailuresPerModel < 0) return "probe, timing and failure counts must be positive";

@@ -11,6 +11,7 @@ using AcShadow.Core.Json;
 using AcShadow.Core.Scenes;
 using AcShadow.Core.Shapes;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Scenes;
 using AcShadow.Fixtures.Shapes;
@@ -56,7 +57,7 @@ internal static class SceneCompiler
     /// </summary>
     public static CellCompilation CompileCell(EnvCell cell, CellStructures structures, ChartOptions chart)
     {
-        var frame = new PartPose(cell.Position.Position, Normalised(cell.Position.Rotation), 1f);
+        var frame = new PartPose(cell.Position.Position, ClientFrameMatrix.PlacedRotation(cell.Position.Rotation), 1f);
         var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
         if (geometry is null)
             return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
@@ -171,7 +172,7 @@ internal static class SceneCompiler
         foreach (var p in placed)
         {
             if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;
-            var frame = new PartPose(p.Object.Frame.Position, Normalised(p.Object.Frame.Rotation), 1f);
+            var frame = new PartPose(p.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(p.Object.Frame.Rotation), 1f);
             foreach (var probe in c.Probes) positions.Add(probe with { Center = frame.ToEntity(probe.Center) });
         }
         foreach (var cell in cells)
@@ -244,11 +245,5 @@ internal static class SceneCompiler
     {
         var half = b.Size * 0.5f;
         return (b.Center, MathF.Sqrt(half.X * half.X + half.Y * half.Y + half.Z * half.Z) * 1.0001f + 1e-3f);
-    }
-
-    private static Quaternion Normalised(Quaternion q)
-    {
-        var length = MathF.Sqrt(q.X * q.X + q.Y * q.Y + q.Z * q.Z + q.W * q.W);
-        return length > 1e-6f && float.IsFinite(length) ? new Quaternion(q.X / length, q.Y / length, q.Z / length, q.W / length) : Quaternion.Identity;
     }
 }

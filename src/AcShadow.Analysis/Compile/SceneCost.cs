@@ -2,6 +2,7 @@ using System.Numerics;
 using AcShadow.Analysis.Chart;
 using AcShadow.Analysis.Chart.Models;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Scenes;
 
 namespace AcShadow.Analysis.Compile;
@@ -20,7 +21,7 @@ internal static class SceneCost
         if (positions.Count == 0 || sample < 1) return 0;
         var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
         {
-            var frame = new PartPose(o.Placed.Object.Frame.Position, Normalised(o.Placed.Object.Frame.Rotation), 1f);
+            var frame = new PartPose(o.Placed.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(o.Placed.Object.Frame.Rotation), 1f);
             return (Frame: frame, Bound: frame.ToEntity(o.Center), o.Radius, Counter: new QueryCost.Counter(o.Model.Shapes));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
@@ -59,10 +60,4 @@ internal static class SceneCost
 
     private static readonly Fixtures.Shapes.ShadowShape CellShape = new(Fixtures.Shapes.ShapeSource.Part, 0, null, Fixtures.Shapes.CollisionType.Bsp,
         Vector3.Zero, Quaternion.Identity, 1f, 0f, 0f, null);
-
-    private static Quaternion Normalised(Quaternion q)
-    {
-        var length = MathF.Sqrt(q.X * q.X + q.Y * q.Y + q.Z * q.Z + q.W * q.W);
-        return length > 1e-6f && float.IsFinite(length) ? new Quaternion(q.X / length, q.Y / length, q.Z / length, q.W / length) : Quaternion.Identity;
-    }
 }

@@ -7,7 +7,9 @@ namespace AcShadow.Analysis.Fitting;
 /// <summary>
 /// A part's box: the smaller (by volume) of the box along the part's own axes and the box along the
 /// principal axes of its physics vertices; on a tie the part's axes (a box GfxObj modelled along its own
-/// axes has its corners at the very vertices, so its faces are the polygons' planes bit for bit).
+/// axes has its corners at the very vertices, so its faces are the polygons' planes bit for bit). The box's
+/// axes are a fit within the part's own space, not a frame the client moves points with, so they turn by the
+/// plain unit-quaternion rotation.
 /// </summary>
 internal static class PartBoxFit
 {

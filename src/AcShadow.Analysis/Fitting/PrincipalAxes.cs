@@ -28,6 +28,7 @@ public static class PrincipalAxes
         var y = new Vector3((float)v[0, 1], (float)v[1, 1], (float)v[2, 1]);
         var z = Vector3.Cross(x, y);
         var m = new Matrix4x4(x.X, x.Y, x.Z, 0, y.X, y.Y, y.Z, 0, z.X, z.Y, z.Z, 0, 0, 0, 0, 1);
+        // A fitted axis set, not a frame read from the dat: unit length is what the box fit and the plain rotation need.
         var q = Quaternion.Normalize(Quaternion.CreateFromRotationMatrix(m));
         return q.W < 0 ? new Quaternion(-q.X, -q.Y, -q.Z, -q.W) : q;
     }

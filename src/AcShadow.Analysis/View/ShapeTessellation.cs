@@ -42,7 +42,7 @@ internal static class ShapeTessellation
     };
 
     public static ViewShape Bsp(ShadowShape shape, BspDump dump) =>
-        Polygons(NameOf(shape), new PartPose(shape.LocalPosition, shape.LocalRotation, shape.Scale), dump);
+        Polygons(NameOf(shape), PartPose.InEntity(shape.LocalPosition, shape.LocalRotation, shape.Scale), dump);
 
     /// <summary>A BSP dump's physics polygons posed by <paramref name="pose"/> (a part's in its entity, the identity for a cell in its own frame).</summary>
     public static ViewShape Polygons(string name, PartPose pose, BspDump dump)
@@ -83,7 +83,10 @@ internal static class ShapeTessellation
         return new ViewShape(name, mesh, new TriangleMesh(), new PolygonOutline(outline), Anchor(pose, outline));
     }
 
-    /// <summary>A part-space normal in the entity: turned by the part's rotation, reversed by a mirroring (negative) scale.</summary>
+    /// <summary>
+    /// A part-space normal in the entity for shading: turned by the part's rotation, reversed by a mirroring
+    /// (negative) scale. Drawing only (no client counterpart), so the plain rotation, not the client's matrix.
+    /// </summary>
     private static Vector3 Posed(PartPose pose, Vector3 normal)
     {
         var turned = QuaternionRotation.Rotate(pose.Rotation, normal);

@@ -7,21 +7,21 @@ namespace AcShadow.Core.Formats;
 /// <summary>
 /// A cell frame as 4×4 matrices in System.Numerics' convention, the one acdream's cell fixtures use
 /// (row vectors, p' = p·M, so M = CreateFromQuaternion(q) · CreateTranslation(t), translation in
-/// M41–M43). Written out in scalar float arithmetic in a fixed order so every machine gets the same bits.
-/// The inverse is the rigid inverse: the rotation transposed, translation −t·Rᵀ.
+/// M41–M43). The rotation rows are the client's own matrix, m_fl2gv as Frame::cache builds it from the stored
+/// quaternion (<see cref="ClientFrameMatrix"/>; its rows are M's rows), so a consumer multiplying by M uses the
+/// client's entries. The inverse is the rigid inverse: the rotation transposed, translation −t·Rᵀ (a matrix
+/// cannot subtract the origin first as Frame::globaltolocal does; docs/chart.md has the size of that).
 /// </summary>
 public static class CellMatrices
 {
     public static Matrix4x4 World(Frame frame)
     {
-        var q = frame.Rotation;
-        float xx = q.X * q.X, yy = q.Y * q.Y, zz = q.Z * q.Z;
-        float xy = q.X * q.Y, wz = q.Z * q.W, xz = q.Z * q.X, wy = q.Y * q.W, yz = q.Y * q.Z, wx = q.X * q.W;
+        var m = ClientFrameMatrix.From(frame);
         var t = frame.Position;
         return new Matrix4x4(
-            1f - 2f * (yy + zz), 2f * (xy + wz), 2f * (xz - wy), 0f,
-            2f * (xy - wz), 1f - 2f * (zz + xx), 2f * (yz + wx), 0f,
-            2f * (xz + wy), 2f * (yz - wx), 1f - 2f * (yy + xx), 0f,
+            m.M0, m.M1, m.M2, 0f,
+            m.M3, m.M4, m.M5, 0f,
+            m.M6, m.M7, m.M8, 0f,
             t.X, t.Y, t.Z, 1f);
     }
 

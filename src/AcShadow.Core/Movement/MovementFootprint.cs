@@ -42,6 +42,7 @@ public sealed record MovementFootprint(Vector3 Min, Vector3 Max)
                 case CollisionType.Bsp when shape.GfxObjId is { } id && subject.Bsps.TryGetValue(id, out var bsp):
                     foreach (var polygon in bsp.Polygons)
                         foreach (var v in polygon.Vertices)
+                            // The extent the movement cases are laid out in, no client counterpart: the plain rotation.
                             Add(shape.LocalPosition + QuaternionRotation.Rotate(shape.LocalRotation, v * shape.Scale));
                     break;
                 case CollisionType.Cylinder or CollisionType.Sphere:

@@ -26,6 +26,7 @@ public static class PoseMoves
             if (PlacementPose(pose.Placement, setup.Parts.Count, i) is not { } p) continue;
             var m = pose.MotionFrames[i];
             var metres = Vector3.Distance(p.Position, m.Position);
+            // The angle between two rotations (a report, not a frame the client moves points with): unit quaternions compared.
             var dot = Math.Abs((double)Quaternion.Dot(Quaternion.Normalize(p.Rotation), Quaternion.Normalize(m.Rotation)));
             var degrees = (float)(2 * Math.Acos(Math.Min(1, dot)) * 180 / Math.PI);
             if (metres > MovedMetres || degrees > MovedDegrees)

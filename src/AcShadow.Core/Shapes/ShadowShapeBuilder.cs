@@ -3,6 +3,7 @@ using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Poses;
+using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Geometry;
 using AcShadow.Fixtures.Shapes;
 
@@ -193,7 +194,8 @@ public static class ShadowShapeBuilder
     {
         var root = gfx.PhysicsBsp!.BoundingSphere;
         var position = pose.Position * entityScale;
-        var center = position + QuaternionRotation.Rotate(pose.Rotation, root.Center * partScale);
+        // The root sphere's centre out of the part's frame as the client holds it (Frame::combine, Frame::localtoglobal).
+        var center = PartPose.InEntity(position, pose.Rotation, partScale).ToEntity(root.Center);
         var radius = root.Radius * partScale;
         return new ShadowShape(ShapeSource.Part, partIndex, gfx.Id, CollisionType.Bsp, position, pose.Rotation, partScale, radius, 0f, new Sphere(center, radius));
     }

@@ -18,6 +18,7 @@ internal sealed class BoxSphereQuery(OrientedBox box) : ISphereOverlap
     public bool Overlaps(Vector3 center, float radius)
     {
         if (!SphereBounds.IsValidProbe(center, radius)) return false;
+        // Into the fitted box's own axes: a model with no client counterpart (see OrientedBox), so the plain rotation.
         var q = QuaternionRotation.RotateInverse(Box.Axes, Vec.Sub(center, Box.Center));
         var ex = MathF.Abs(q.X) - Box.HalfExtents.X;
         var ey = MathF.Abs(q.Y) - Box.HalfExtents.Y;

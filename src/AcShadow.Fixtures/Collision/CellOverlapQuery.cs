@@ -25,7 +25,7 @@ internal sealed class CellOverlapQuery : ISphereOverlap
         var length = orientation.Length();
         if (!float.IsFinite(length) || length < 1e-6f || !Vec.IsFinite(origin))
             throw new ArgumentException($"a cell frame needs a finite origin and a non-zero rotation; got {origin}, {orientation}");
-        _frame = ClientFrameMatrix.From(new Frame(origin, orientation));
+        _frame = ClientFrameMatrix.From(new Frame(origin, ClientFrameMatrix.PlacedRotation(orientation)));
         _bsp = BspSphereQuery.From(physics);
     }
 

@@ -82,14 +82,10 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
         var lengthSquared = rotation.X * rotation.X + rotation.Y * rotation.Y + rotation.Z * rotation.Z + rotation.W * rotation.W;
         if (!(lengthSquared > 1e-12f)) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: zero rotation quaternion; skipped"); return null; }
         if (MathF.Abs(lengthSquared - 1f) > 1e-4f)
-        {
-            var length = MathF.Sqrt(lengthSquared);
-            rotation = new Quaternion(rotation.X / length, rotation.Y / length, rotation.Z / length, rotation.W / length);
-            log.Add(CollisionDiagnosticCodes.NormalisedRotation, FormattableString.Invariant($"{name}: rotation quaternion of length {length:0.######} normalised"));
-        }
+            log.Add(CollisionDiagnosticCodes.NormalisedRotation, FormattableString.Invariant($"{name}: rotation quaternion of length {MathF.Sqrt(lengthSquared):0.######} normalised"));
         var bsp = bsps(id);
         if (bsp is null) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: no PhysicsBSP for GfxObj 0x{id:X8}; skipped"); return null; }
-        return new PreparedShape(shape, name, new PartPose(shape.LocalPosition, rotation, shape.Scale), bsp);
+        return new PreparedShape(shape, name, PartPose.InEntity(shape.LocalPosition, rotation, shape.Scale), bsp);
     }
 
     private interface IShapeCheck

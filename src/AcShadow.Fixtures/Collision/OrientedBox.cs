@@ -6,6 +6,9 @@ namespace AcShadow.Fixtures.Collision;
 /// <summary>
 /// A box in a part's own space: its centre, its axes (a unit quaternion turning the box's x, y, z onto
 /// them) and its half extents along them (zero for a flat box). The part's pose places it in the entity.
+/// The box is acshadow's fitted model with no client counterpart, so its own axes turn by the plain unit-quaternion
+/// rotation (<see cref="QuaternionRotation"/>); moving between the part's and the entity's frame is the part pose's
+/// client arithmetic.
 /// </summary>
 internal readonly record struct OrientedBox(Vector3 Center, Quaternion Axes, Vector3 HalfExtents)
 {

@@ -6,7 +6,15 @@ namespace AcShadow.Fixtures.Collision;
 /// <summary>A posed part: where its GfxObj sits in entity space, how it is turned, its uniform scale.</summary>
 internal readonly record struct PartPose(Vector3 Position, Quaternion Rotation, float Scale)
 {
-    /// <summary>The part's frame as the client moves points with it (Frame::cache from the stored quaternion).</summary>
+    /// <summary>
+    /// A part as CPartArray::UpdateParts places it in an entity at the identity frame: Frame::combine keeps the
+    /// origin and normalises the rotation by Frame::set_rotate, so a part's frame never holds the animation's
+    /// stored quaternion (the stored one stays when set_rotate refuses it).
+    /// </summary>
+    public static PartPose InEntity(Vector3 position, Quaternion rotation, float scale) =>
+        new(position, ClientFrameMatrix.SetRotate(rotation) ?? rotation, scale);
+
+    /// <summary>The part's frame as the client moves points with it (Frame::cache from the quaternion it holds).</summary>
     public ClientFrameMatrix Matrix => ClientFrameMatrix.From(new Frame(Position, Rotation));
 
     /// <summary>

@@ -12,6 +12,7 @@ namespace AcShadow.Fixtures.Movement;
 internal sealed class BspMovementCollider(BspPart part)
 {
     private readonly BspMovementTraversal _tree = new(part.Bsp);
+    private readonly ClientFrameMatrix _matrix = part.Pose.Matrix;
     private float Scale => part.Pose.Scale;
 
     // CPhysicsPart::find_obj_collisions → CGfxObj::find_obj_collisions
@@ -142,7 +143,8 @@ internal sealed class BspMovementCollider(BspPart part)
         path.Walkable = new WalkableSurface(walkable, part.Pose, localCenter, localRadius, path.LocalSpaceZ);
     }
 
-    private Vector3 ToGlobal(Vector3 localVector) => QuaternionRotation.Rotate(part.Pose.Rotation, localVector);
+    // Frame::localtoglobalvec by the part frame's matrix (path->localspace_pos).
+    private Vector3 ToGlobal(Vector3 localVector) => _matrix.LocalToGlobalVec(localVector);
 
     private Vector3 ToGlobalOffset(Vector3 localOffset) => MoveMath.Scale(ToGlobal(localOffset), Scale);
 }

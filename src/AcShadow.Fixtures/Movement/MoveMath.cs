@@ -29,11 +29,4 @@ internal static class MoveMath
         v = Scale(v, 1f / length);
         return false;
     }
-
-    /// <summary>The rotation that turns by <paramref name="inner"/> first, then by <paramref name="outer"/> (Hamilton product outer·inner).</summary>
-    public static Quaternion Compose(Quaternion outer, Quaternion inner) => new(
-        outer.W * inner.X + outer.X * inner.W + outer.Y * inner.Z - outer.Z * inner.Y,
-        outer.W * inner.Y - outer.X * inner.Z + outer.Y * inner.W + outer.Z * inner.X,
-        outer.W * inner.Z + outer.X * inner.Y - outer.Y * inner.X + outer.Z * inner.W,
-        outer.W * inner.W - outer.X * inner.X - outer.Y * inner.Y - outer.Z * inner.Z);
 }

@@ -23,15 +23,17 @@ internal sealed class ObjectCollider
         var parts = new List<BspMovementCollider>();
         var cylinders = new List<CylSphereCollider>();
         var spheres = new List<SphereCollider>();
-        var frame = ClientFrameMatrix.From(new Frame(obstacle.Position, obstacle.Rotation));
+        var placed = new Frame(obstacle.Position, ClientFrameMatrix.PlacedRotation(obstacle.Rotation));
+        var frame = ClientFrameMatrix.From(placed);
         foreach (var shape in obstacle.Shapes)
         {
-            // Frame::combine(f1, AFrame f2, scale): the part's origin scaled first, then f1's localtoglobal.
             var position = frame.LocalToGlobal(MoveMath.Scale(shape.LocalPosition, scale));
             switch (shape.CollisionType)
             {
                 case CollisionType.Bsp when shape.GfxObjId is { } id && obstacle.Bsps.TryGetValue(id, out var bsp):
-                    var pose = new PartPose(position, MoveMath.Compose(obstacle.Rotation, shape.LocalRotation), shape.Scale * scale);
+                    // CPartArray::UpdateParts: Frame::combine(object frame, part frame, scale), its rotation through Frame::set_rotate.
+                    var part = ClientFrameMatrix.Combine(placed, new Frame(shape.LocalPosition, shape.LocalRotation), scale);
+                    var pose = new PartPose(part.Position, part.Rotation, shape.Scale * scale);
                     parts.Add(new BspMovementCollider(new BspPart(pose, bsp)));
                     break;
                 case CollisionType.Cylinder:

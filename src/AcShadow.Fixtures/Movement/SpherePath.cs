@@ -7,14 +7,15 @@ namespace AcShadow.Fixtures.Movement;
 /// <summary>
 /// SPHEREPATH: the mover's spheres (local, at the check position, at the current position, and in the space
 /// of the part being tested), the current, check and backup positions, and the step's mode flags. The mover's
-/// heading is fixed for a walk, so positions are origins and the heading is kept once.
+/// heading is the identity for every walk, so positions are origins: through the identity matrix Frame::cache
+/// builds (m0 = m4 = m8 = 1, the rest 0), SPHEREPATH::cache_global_sphere's sums reduce to origin + local, one
+/// rounding, as a float sum rounds.
 /// </summary>
 internal sealed class SpherePath
 {
     public int NumSphere;
     public Sphere[] LocalSphere = [];
     public Vector3 LocalLowPoint;
-    public Quaternion Heading = Quaternion.Identity;
 
     public Vector3[] GlobalCenter = [];
     public Vector3 GlobalLowPoint;
@@ -76,7 +77,7 @@ internal sealed class SpherePath
         CacheGlobalCurrCenter();
     }
 
-    private Vector3 LocalToGlobal(Vector3 origin, Vector3 local) => origin + QuaternionRotation.Rotate(Heading, local);
+    private static Vector3 LocalToGlobal(Vector3 origin, Vector3 local) => origin + local;
 
     // SPHEREPATH::cache_global_curr_center
     public void CacheGlobalCurrCenter()
@@ -129,16 +130,18 @@ internal sealed class SpherePath
         NegCollisionNormal = -normal;
     }
 
-    // SPHEREPATH::cache_localspace_sphere: both spheres at the check and current positions, in part space
+    // SPHEREPATH::cache_localspace_sphere: both spheres at the check and current positions, in part space. Each goes
+    // from the mover's own sphere (Position::localtolocal), not from the cached global one, which
+    // add_offset_to_check_pos may have shifted with its own rounding.
     public void CacheLocalSpaceSphere(PartPose pose)
     {
         for (var i = 0; i < NumSphere; i++)
         {
-            LocalSpaceSphere[i] = Local(pose, GlobalCenter[i], LocalSphere[i].Radius);
-            LocalSpaceCurrCenter[i] = Local(pose, GlobalCurrCenter[i], LocalSphere[i].Radius).Center;
+            LocalSpaceSphere[i] = Local(pose, LocalToGlobal(CheckPos, LocalSphere[i].Center), LocalSphere[i].Radius);
+            LocalSpaceCurrCenter[i] = Local(pose, LocalToGlobal(CurPos, LocalSphere[i].Center), LocalSphere[i].Radius).Center;
         }
         LocalSpacePos = pose;
-        LocalSpaceZ = QuaternionRotation.RotateInverse(pose.Rotation, Vector3.UnitZ);
+        LocalSpaceZ = pose.Matrix.LocalUp();
     }
 
     private static Sphere Local(PartPose pose, Vector3 center, float radius)
@@ -174,7 +177,7 @@ internal sealed class SpherePath
         }
         Walkable = null;
         StepUp = false;
-        var normal = QuaternionRotation.Rotate(walkable.Pose.Rotation, localNormal);
+        var normal = walkable.Pose.Matrix.LocalToGlobalVec(localNormal);
         var offset = GlobalCenter[0] - GlobalCurrCenter[0];
         if (MoveMath.Dot(normal, offset) > 0f) normal = -normal;
         return SphereSlide.Slide(transition, normal);

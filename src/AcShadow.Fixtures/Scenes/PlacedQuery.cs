@@ -1,16 +1,20 @@
 using System.Numerics;
 using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Fixtures.Scenes;
 
 /// <summary>
-/// One placed object of a scene as a query: its landblock-relative frame (the entity's position and unit
-/// rotation; the client turns the moving sphere into each object's frame), its collision in entity
+/// One placed object of a scene as a query: its landblock-relative frame (the entity's position and its rotation
+/// as the client holds it, <see cref="ClientFrameMatrix.PlacedRotation"/>; the client turns the moving sphere into
+/// each object's frame), its collision in entity
 /// space, and an entity-space sphere around everything it can block, for the broad phase.
 /// </summary>
 internal sealed class PlacedQuery
 {
     private readonly Vector3 _boundInLandblock;
+    private readonly float _stretch;
+    private readonly float _reach;
 
     public int Index { get; }
     public uint Id { get; }
@@ -21,23 +25,28 @@ internal sealed class PlacedQuery
 
     public PlacedQuery(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius)
     {
-        var length = MathF.Sqrt(rotation.X * rotation.X + rotation.Y * rotation.Y + rotation.Z * rotation.Z + rotation.W * rotation.W);
-        if (!(length > 1e-6f) || !float.IsFinite(length)) rotation = Quaternion.Identity;
-        else rotation = new Quaternion(rotation.X / length, rotation.Y / length, rotation.Z / length, rotation.W / length);
         Index = index;
         Id = id;
-        Frame = new PartPose(position, rotation, 1f);
+        Frame = new PartPose(position, ClientFrameMatrix.PlacedRotation(rotation), 1f);
         EntityQuery = entityQuery;
         BoundCenter = boundCenter;
         BoundRadius = boundRadius;
         _boundInLandblock = Frame.ToEntity(boundCenter);
+        // A stored quaternion of squared length s gives the matrix s·R + (1 − s)·I: it moves a point up to 2|1 − s|
+        // times its distance from the origin away from the pure rotation, both ways. The broad phase widens by that
+        // much (zero for a unit quaternion) so it never refuses what the narrow phase would block.
+        var q = Frame.Rotation;
+        var off = 4.0 * Math.Abs(1.0 - ((double)q.W * q.W + (double)q.X * q.X + (double)q.Y * q.Y + (double)q.Z * q.Z));
+        _stretch = (float)(1.0 + off);
+        var fromOrigin = Math.Sqrt((double)boundCenter.X * boundCenter.X + (double)boundCenter.Y * boundCenter.Y + (double)boundCenter.Z * boundCenter.Z);
+        _reach = (float)(boundRadius + off * (boundRadius + fromOrigin));
     }
 
     /// <summary>Does a sphere at this landblock-relative centre touch the object?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {
         float dx = center.X - _boundInLandblock.X, dy = center.Y - _boundInLandblock.Y, dz = center.Z - _boundInLandblock.Z;
-        var sum = BoundRadius + radius;
+        var sum = _reach + radius * _stretch;
         if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
         var (local, r) = Frame.ToLocal(center, radius);
         return EntityQuery.Overlaps(local, r);

@@ -182,6 +182,19 @@ public class CellExportTests
                 Assert.True(MathF.Abs(numerics[i, j] - world[i, j]) < 1e-6f, $"M{i + 1}{j + 1}");
     }
 
+    [Fact]
+    public void Cell_matrices_carry_the_client_s_matrix_entries()
+    {
+        // The dat's quarter turn about z (W = Z = 0.70710677f): Frame::cache gives m0 = m4 = 4817239 * 2^-47 (0x331302AE),
+        // m1 = 0.99999994 (0x3F7FFFFF), m3 = -m1, m8 = 1 (worked in ClientFrameMatrixTests); M's rows are m_fl2gv's rows.
+        // System.Numerics' float formula gives 5.9604645e-08 (0x33800000) for M11 instead.
+        var half = BitConverter.UInt32BitsToSingle(0x3F3504F3);
+        var world = CellMatrices.World(new Frame(new Vector3(60f, 60f, 12f), new Quaternion(0f, 0f, half, half)));
+        uint[] expected = [0x331302AE, 0x3F7FFFFF, 0, 0xBF7FFFFF, 0x331302AE, 0, 0, 0, 0x3F800000];
+        uint[] actual = [.. new[] { world.M11, world.M12, world.M13, world.M21, world.M22, world.M23, world.M31, world.M32, world.M33 }.Select(BitConverter.SingleToUInt32Bits)];
+        Assert.Equal(expected, actual);
+    }
+
     private static string CommittedFixtures => AcShadow.Tests.Fixtures.CommittedFixturesTests.RepositoryFixtures();
 }
 

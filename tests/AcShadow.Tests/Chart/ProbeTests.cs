@@ -68,6 +68,9 @@ public class ProbeTests
     {
         Assert.Contains("probe radius", new ChartOptions { ProbeRadius = -1 }.Problem());
         Assert.Contains("spacing", new ChartOptions { Spacing = 0 }.Problem());
+        // A stability probe inside the frame arithmetic's tie band could be answered either way.
+        Assert.Contains("tie band", new ChartOptions { StabilityOffset = ChartOptions.FrameArithmeticTie }.Problem());
+        Assert.Null(new ChartOptions { StabilityOffset = 2.5e-5f }.Problem());
         Assert.Null(new ChartOptions().Problem());
         Assert.Throws<ArgumentException>(() => SampleChart.Run(new ChartOptions { Spacing = float.NaN }, SampleChart.Door));
     }

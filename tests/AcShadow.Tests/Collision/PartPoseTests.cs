@@ -30,6 +30,17 @@ public class PartPoseTests
         Assert.Equal(new uint[] { 0x331302AE, 0x3F7FFFFF, 0 }, Bits(Pose.ToEntity(new Vector3(0.5f, 0f, 0f))));
     }
 
+    [Fact]
+    public void A_part_in_its_entity_holds_the_rotation_set_rotate_makes()
+    {
+        // CPartArray::UpdateParts places a part by Frame::combine, whose Frame::set_rotate normalises: the dat's quarter turn
+        // comes back as stored (ClientFrameMatrixTests), while four components of 0.49999997 (0.5 - 2^-25) have the sum of
+        // squares 1 - 2^-23 + 2^-48, inverse length 1 + 2^-24 + ..., and each product 0.5 - about 2^-49 rounds to 0.5.
+        Assert.Equal(Pose.Rotation, PartPose.InEntity(Vector3.Zero, Pose.Rotation, 2f).Rotation);
+        var q = BitConverter.UInt32BitsToSingle(0x3EFFFFFF);
+        Assert.Equal(new Quaternion(0.5f, 0.5f, 0.5f, 0.5f), PartPose.InEntity(Vector3.Zero, new Quaternion(q, q, q, q), 1f).Rotation);
+    }
+
     private static uint[] Bits(Vector3 v) =>
         [BitConverter.SingleToUInt32Bits(v.X), BitConverter.SingleToUInt32Bits(v.Y), BitConverter.SingleToUInt32Bits(v.Z)];
 }
