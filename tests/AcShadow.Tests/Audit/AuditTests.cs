@@ -54,8 +54,9 @@ public class AuditTests
     public void Summary_counts_match_the_sample()
     {
         var s = SampleReport().Summary;
-        Assert.Equal(15, s["setups"]);
-        Assert.Equal(11, s["bsp"]);
+        // 15 Setups and the four pose-rule Setups of issue 27 (0x02000311, 0x02003700-0x02003900), each with BSP parts.
+        Assert.Equal(19, s["setups"]);
+        Assert.Equal(15, s["bsp"]);
         Assert.Equal(1, s["cylinders"]);
         Assert.Equal(3, s["spheres"]);
         Assert.Equal(0, s["none"]);
@@ -117,8 +118,8 @@ public class AuditTests
     public void Filters_and_sorting()
     {
         var onlyBsp = SampleReport(new AuditQuery(OnlyBsp: true));
-        Assert.Equal(11, onlyBsp.Rows.Count);
-        Assert.Equal(15, onlyBsp.Audited);
+        Assert.Equal(15, onlyBsp.Rows.Count);
+        Assert.Equal(19, onlyBsp.Audited);
         Assert.Equal([0x02003000u, 0x02003100u], SampleReport(new AuditQuery(FlagMismatch: true)).Rows.Select(r => r.SetupId));
         var low = SampleReport(new AuditQuery(MaxCoverage: 0.2));
         Assert.All(low.Rows, r => Assert.True(r.Coverage <= 0.2));
