@@ -3,18 +3,17 @@ using AcShadow.Core.Dat.Objects;
 namespace AcShadow.Core.Poses;
 
 /// <summary>
-/// An animation node as retail builds it from an AnimData, reduced to what a first pose needs: the
-/// animation and the frame number the node starts at.
+/// An animation node as retail builds it from an AnimData (AnimSequenceNode), reduced to what a first pose
+/// needs: the animation, its clamped frame range and its direction.
 /// </summary>
-public readonly record struct AnimationCursor(Animation Animation, int Frame)
+public readonly record struct AnimationNode(Animation Animation, int LowFrame, int HighFrame, bool Forward)
 {
     /// <summary>
-    /// AnimSequenceNode::set_animation_id's clamps, then get_starting_frame: HighFrame &lt; 0 → last frame;
-    /// LowFrame ≥ NumFrames (compared unsigned, as retail does) → last frame; HighFrame ≥ NumFrames → last
-    /// frame; LowFrame &gt; HighFrame → HighFrame = LowFrame. A forward (framerate ≥ 0) node starts at LowFrame,
-    /// a backward one at HighFrame + 1 − 0.0002, whose floor is HighFrame.
+    /// AnimSequenceNode::set_animation_id's clamps: HighFrame &lt; 0 → last frame; LowFrame ≥ NumFrames
+    /// (compared unsigned, as retail does) → last frame; HighFrame ≥ NumFrames → last frame; LowFrame &gt;
+    /// HighFrame → HighFrame = LowFrame. A framerate ≥ 0 plays forward.
     /// </summary>
-    public static AnimationCursor Start(Animation animation, AnimData data)
+    public static AnimationNode From(Animation animation, AnimData data)
     {
         var last = animation.PartFrames.Count - 1;
         int low = data.LowFrame, high = data.HighFrame;
@@ -22,9 +21,15 @@ public readonly record struct AnimationCursor(Animation Animation, int Frame)
         if ((uint)low >= (uint)animation.PartFrames.Count) low = last;
         if (high > last) high = last;
         if (low > high) high = low;
-        return new AnimationCursor(animation, data.Framerate >= 0f ? low : high);
+        return new AnimationNode(animation, low, high, data.Framerate >= 0f);
     }
 
-    /// <summary>The part frames at <see cref="Frame"/>, or null when the frame number is outside the animation (no pose).</summary>
-    public AnimationFrame? PartFrame => Frame >= 0 && Frame < Animation.PartFrames.Count ? Animation.PartFrames[Frame] : null;
+    /// <summary>get_starting_frame, floored: LowFrame forward; backward HighFrame + 1 − 0.0002, whose floor is HighFrame.</summary>
+    public int StartingFrame => Forward ? LowFrame : HighFrame;
+
+    /// <summary>get_ending_frame, floored: forward HighFrame + 1 − 0.0002, whose floor is HighFrame; backward LowFrame.</summary>
+    public int EndingFrame => Forward ? HighFrame : LowFrame;
+
+    /// <summary>get_part_frame: the part frames at <paramref name="frame"/>, or null when it is outside the animation (no pose).</summary>
+    public AnimationFrame? PartFrameAt(int frame) => frame >= 0 && frame < Animation.PartFrames.Count ? Animation.PartFrames[frame] : null;
 }
