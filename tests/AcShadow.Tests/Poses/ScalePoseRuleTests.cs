@@ -24,9 +24,10 @@ public sealed class ScalePoseRuleTests(SmallScaleFixture fixture) : IClassFixtur
         return (setup, RetailPoseResolver.Resolve(setup, new ShapeBuildOptions(ShapePolicy.Retail).PoseSettings, portal, diagnostics), diagnostics);
     }
 
+    /// <summary>The pose of each of the Setup's parts (a 30-part animation also has frames past them, which pose nothing).</summary>
     private static void AssertParts(ResolvedPose pose, int parts, Func<int, Vector3> expected)
     {
-        Assert.Equal(parts, pose.MotionFrames!.Count);
+        Assert.True(pose.MotionFrames!.Count >= parts, $"{pose.MotionFrames.Count} part frames for {parts} parts");
         for (var p = 0; p < parts; p++)
         {
             Assert.True(Vector3.Distance(expected(p), pose.MotionFrames[p].Position) < 1e-6f, $"part {p} at {pose.MotionFrames[p].Position}, expected {expected(p)}");
