@@ -241,28 +241,14 @@ public static class SampleSpecAuthor
                 Height = 2.5,
                 Flags = ["HasPhysicsBsp"],
             },
-            new SetupSpec
+            ColumnSetup(DefaultAnimationSetup, "a DefaultAnimation and no motion table: its first frame moves the column 0.3 m along x from Resting") with
             {
-                Id = Hex(DefaultAnimationSetup),
-                Comment = "a DefaultAnimation and no motion table: its first frame moves the column 0.3 m along x from Resting",
-                Parts = [Hex(Column)],
-                Placements = Place(("Resting", [At(0, 0, 0)])),
                 DefaultAnimation = Hex(DefaultAnimationAnim),
-                Radius = 0.4,
-                Height = 2,
-                Flags = ["HasPhysicsBsp"],
             },
-            new SetupSpec
+            ColumnSetup(ThreeAnimationSetup, "a default cycle of three animations: once in the world only the last (played backwards, from its last frame) is left; "
+                + "the first would put the column 0.1 m along x") with
             {
-                Id = Hex(ThreeAnimationSetup),
-                Comment = "a default cycle of three animations: once in the world only the last (played backwards, from its last frame) is left; "
-                    + "the first would put the column 0.1 m along x",
-                Parts = [Hex(Column)],
-                Placements = Place(("Resting", [At(0, 0, 0)])),
                 DefaultMotionTable = Hex(ThreeAnimationTable),
-                Radius = 0.4,
-                Height = 2,
-                Flags = ["HasPhysicsBsp"],
             },
             new SetupSpec
             {
@@ -276,16 +262,9 @@ public static class SampleSpecAuthor
                 Height = 0.2,
                 Flags = ["HasPhysicsBsp"],
             },
-            new SetupSpec
+            ColumnSetup(AbsentAnimationSetup, "a default cycle of three animations whose last is absent from the dat: retail drops it, so the second is left current") with
             {
-                Id = Hex(AbsentAnimationSetup),
-                Comment = "a default cycle of three animations whose last is absent from the dat: retail drops it, so the second is left current",
-                Parts = [Hex(Column)],
-                Placements = Place(("Resting", [At(0, 0, 0)])),
                 DefaultMotionTable = Hex(AbsentAnimationTable),
-                Radius = 0.4,
-                Height = 2,
-                Flags = ["HasPhysicsBsp"],
             },
             new SetupSpec
             {
@@ -617,6 +596,18 @@ public static class SampleSpecAuthor
     }
 
     private static string Hex(uint id) => $"0x{id:X8}";
+
+    /// <summary>The octagonal column alone, Resting at the origin: the animated one-part Setups.</summary>
+    private static SetupSpec ColumnSetup(uint id, string comment) => new()
+    {
+        Id = Hex(id),
+        Comment = comment,
+        Parts = [Hex(Column)],
+        Placements = Place(("Resting", [At(0, 0, 0)])),
+        Radius = 0.4,
+        Height = 2,
+        Flags = ["HasPhysicsBsp"],
+    };
 
     private static AnimDataSpec Anim(uint id, double framerate = 30, int lowFrame = 0) => new() { Anim = Hex(id), Framerate = framerate, LowFrame = lowFrame };
     /// <summary>
