@@ -36,12 +36,20 @@ public static class SampleSpecAuthor
     public const uint NoDefaultCycleTable = 0x09000016, NoDefaultCycleOpenAnim = 0x03000016;
     public const uint AnimatedStaticSetup = 0x02003500, AnimatedStaticTable = 0x09003500, AnimatedStaticAnim = 0x03003500;
     public const uint DefaultAnimationSetup = 0x02003600, DefaultAnimationAnim = 0x03003600;
-    public const uint NonCombat = 0x8000003D, Ready = 0x41000003, On = 0x4000000B, Off = 0x4000000C;
+    // The pose rules of issue 27, one Setup each: a default cycle of three animations, a door whose table starts
+    // in another style (0x02000311 is a catalog door; its catalog table is 0x0900002C), a cycle naming an animation
+    // the dat lacks, and a DefaultAnimation with part frames for 2 of its Setup's 3 parts.
+    public const uint ThreeAnimationSetup = 0x02003700, ThreeAnimationTable = 0x09003700, CycleFirstAnim = 0x03003701, CycleSecondAnim = 0x03003702, CycleLastAnim = 0x03003703;
+    public const uint StyleDoorSetup = 0x02000311, StyleDoorTable = 0x0900002C;
+    public const uint StyleDoorCombatAnim = 0x0300002C, StyleDoorClosedAnim = 0x0300002D, StyleDoorOpenAnim = 0x0300002E, StyleDoorCombatOffAnim = 0x0300002F;
+    public const uint AbsentAnimationSetup = 0x02003800, AbsentAnimationTable = 0x09003800, AbsentCaseFirstAnim = 0x03003801, AbsentCaseSecondAnim = 0x03003802, AbsentAnim = 0x03003803;
+    public const uint ShortAnimationSetup = 0x02003900, ShortAnimationAnim = 0x03003900;
+    public const uint NonCombat = 0x8000003D, HandCombat = 0x8000003C, Ready = 0x41000003, On = 0x4000000B, Off = 0x4000000C;
 
     public static ForgeSpec Create() => new()
     {
         Iteration = 1,
-        Provenance = "Setup ids 0x020019FF, 0x0200024F and 0x02000281 are door Setups from the public ACE world database "
+        Provenance = "Setup ids 0x020019FF, 0x0200024F, 0x02000281 and 0x02000311 are door Setups from the public ACE world database "
             + "door list (door-setups.tsv); 0x020019FF's part ids, Sphere, Radius and Height follow published retail facts. "
             + "All geometry is synthetic (invented, part-local metres, Z up); every other id is invented.",
         Comment = "The forge's built-in sample: one object per collision case acshadow must handle. Regenerate with `forge sample --write-spec`.",
@@ -233,14 +241,39 @@ public static class SampleSpecAuthor
                 Height = 2.5,
                 Flags = ["HasPhysicsBsp"],
             },
+            ColumnSetup(DefaultAnimationSetup, "a DefaultAnimation and no motion table: its first frame moves the column 0.3 m along x from Resting") with
+            {
+                DefaultAnimation = Hex(DefaultAnimationAnim),
+            },
+            ColumnSetup(ThreeAnimationSetup, "a default cycle of three animations: once in the world only the last (played backwards, from its last frame) is left; "
+                + "the first would put the column 0.1 m along x") with
+            {
+                DefaultMotionTable = Hex(ThreeAnimationTable),
+            },
             new SetupSpec
             {
-                Id = Hex(DefaultAnimationSetup),
-                Comment = "a DefaultAnimation and no motion table: its first frame moves the column 0.3 m along x from Resting",
-                Parts = [Hex(Column)],
+                Id = Hex(StyleDoorSetup),
+                Comment = "single-part door whose catalog motion table 0x0900002C starts in HandCombat: the NonCombat style command comes before Off or On, "
+                    + "so the door closes by NonCombat's Off cycle, not HandCombat's",
+                Parts = [Hex(SinglePartDoor)],
                 Placements = Place(("Resting", [At(0, 0, 0)])),
-                DefaultAnimation = Hex(DefaultAnimationAnim),
-                Radius = 0.4,
+                Spheres = [new SphereSpec { Center = [0, 0, 0.02], Radius = 0.1 }],
+                Radius = 0.141,
+                Height = 0.2,
+                Flags = ["HasPhysicsBsp"],
+            },
+            ColumnSetup(AbsentAnimationSetup, "a default cycle of three animations whose last is absent from the dat: retail drops it, so the second is left current") with
+            {
+                DefaultMotionTable = Hex(AbsentAnimationTable),
+            },
+            new SetupSpec
+            {
+                Id = Hex(ShortAnimationSetup),
+                Comment = "3 parts and a DefaultAnimation with part frames for the first 2: retail never places the column, which keeps the frame it was made with",
+                Parts = [Hex(Pedestal), Hex(LBlock), Hex(Column)],
+                Placements = Place(("Resting", [At(0, 0, 0), At(-0.3, -0.3, 0.75, Z(45)), At(0.6, 0.2, 1.0, X(90))])),
+                DefaultAnimation = Hex(ShortAnimationAnim),
+                Radius = 1.2,
                 Height = 2,
                 Flags = ["HasPhysicsBsp"],
             },
@@ -300,6 +333,43 @@ public static class SampleSpecAuthor
                 StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Ready) }],
                 Cycles = [new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Ready), Anims = [Anim(AnimatedStaticAnim)], Omega = [0, 0, 0.5] }],
             },
+            new MotionTableSpec
+            {
+                Id = Hex(ThreeAnimationTable),
+                Comment = "NonCombat Ready plays three animations; the last, backwards, is the cyclic one",
+                DefaultStyle = Hex(NonCombat),
+                StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Ready) }],
+                Cycles = [new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Ready), Anims = [Anim(CycleFirstAnim), Anim(CycleSecondAnim), Anim(CycleLastAnim, -30)] }],
+            },
+            new MotionTableSpec
+            {
+                Id = Hex(StyleDoorTable),
+                Comment = "door table starting in HandCombat Ready; NonCombat's default is Off; HandCombat has an Off cycle of its own (what skipping the style command would play) "
+                    + "and a link to NonCombat",
+                DefaultStyle = Hex(HandCombat),
+                StyleDefaults =
+                [
+                    new StyleDefaultSpec { Style = Hex(HandCombat), Substate = Hex(Ready) },
+                    new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Off) },
+                ],
+                Cycles =
+                [
+                    new MotionSpec { Style = Hex(HandCombat), Motion = Hex(Ready), Anims = [Anim(StyleDoorCombatAnim)] },
+                    new MotionSpec { Style = Hex(HandCombat), Motion = Hex(Off), Anims = [Anim(StyleDoorCombatOffAnim)] },
+                    new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Off), Anims = [Anim(StyleDoorClosedAnim)] },
+                    new MotionSpec { Style = Hex(NonCombat), Motion = Hex(On), Anims = [Anim(StyleDoorOpenAnim)] },
+                ],
+                Links = [new LinkSpec { Style = Hex(HandCombat), From = Hex(Ready), To = Hex(NonCombat), Anims = [Anim(StyleDoorCombatOffAnim)] }],
+            },
+            new MotionTableSpec
+            {
+                Id = Hex(AbsentAnimationTable),
+                Comment = "NonCombat Ready plays three animations, the last of them left out of the dat",
+                DefaultStyle = Hex(NonCombat),
+                StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Ready) }],
+                Cycles = [new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Ready), Anims = [Anim(AbsentCaseFirstAnim), Anim(AbsentCaseSecondAnim, lowFrame: 1), Anim(AbsentAnim)] }],
+                MissingAnimations = [Hex(AbsentAnim)],
+            },
         ],
         Animations =
         [
@@ -350,6 +420,76 @@ public static class SampleSpecAuthor
                 Comment = "two frames: the column 0.3 m along x, then 0.6 m",
                 Parts = 1,
                 Frames = [[At(0.3, 0, 0)], [At(0.6, 0, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(CycleFirstAnim),
+                Comment = "first of three: the column 0.1 m along x, then 0.2 m",
+                Parts = 1,
+                Frames = [[At(0.1, 0, 0)], [At(0.2, 0, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(CycleSecondAnim),
+                Comment = "second of three: the column 0.1 m along y, then 0.2 m",
+                Parts = 1,
+                Frames = [[At(0, 0.1, 0)], [At(0, 0.2, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(CycleLastAnim),
+                Comment = "last of three: the column 0.1, 0.2, then 0.3 m up, the last frame also turned 90 deg about Z",
+                Parts = 1,
+                Frames = [[At(0, 0, 0.1)], [At(0, 0, 0.2)], [At(0, 0, 0.3, Z(90))]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(StyleDoorCombatAnim),
+                Comment = "the style door in HandCombat Ready: lifted 0.4 m",
+                Parts = 1,
+                Frames = [[At(0, 0, 0.4)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(StyleDoorClosedAnim),
+                Comment = "the style door closed (NonCombat Off): 2 cm along x",
+                Parts = 1,
+                Frames = [[At(0.02, 0, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(StyleDoorOpenAnim),
+                Comment = "the style door open (NonCombat On): turned 90 deg about Z, 0.5 m along -y",
+                Parts = 1,
+                Frames = [[At(0, -0.5, 0, Z(90))]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(StyleDoorCombatOffAnim),
+                Comment = "HandCombat Off, and the link from HandCombat Ready to NonCombat: sunk 1 m",
+                Parts = 1,
+                Frames = [[At(0, 0, -1)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(AbsentCaseFirstAnim),
+                Comment = "first of the cycle with an absent animation: the column 0.5 m along x",
+                Parts = 1,
+                Frames = [[At(0.5, 0, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(AbsentCaseSecondAnim),
+                Comment = "second of the cycle with an absent animation (played from frame 1): the column 0.5, then 0.7 m along y",
+                Parts = 1,
+                Frames = [[At(0, 0.5, 0)], [At(0, 0.7, 0)]],
+            },
+            new AnimationSpec
+            {
+                Id = Hex(ShortAnimationAnim),
+                Comment = "part frames for 2 of 3 parts: the pedestal 0.2 m up, the L-block 0.2 m above its Resting frame",
+                Parts = 2,
+                Frames = [[At(0, 0, 0.2), At(-0.3, -0.3, 0.95, Z(45))]],
             },
         ],
         Landblocks =
@@ -457,7 +597,19 @@ public static class SampleSpecAuthor
 
     private static string Hex(uint id) => $"0x{id:X8}";
 
-    private static AnimDataSpec Anim(uint id, double framerate = 30) => new() { Anim = Hex(id), Framerate = framerate };
+    /// <summary>The octagonal column alone, Resting at the origin: the animated one-part Setups.</summary>
+    private static SetupSpec ColumnSetup(uint id, string comment) => new()
+    {
+        Id = Hex(id),
+        Comment = comment,
+        Parts = [Hex(Column)],
+        Placements = Place(("Resting", [At(0, 0, 0)])),
+        Radius = 0.4,
+        Height = 2,
+        Flags = ["HasPhysicsBsp"],
+    };
+
+    private static AnimDataSpec Anim(uint id, double framerate = 30, int lowFrame = 0) => new() { Anim = Hex(id), Framerate = framerate, LowFrame = lowFrame };
     /// <summary>
     /// Half of the hook types, with values a reader can get wrong: part indexes above 255, ReplaceObject ids in
     /// the short (offset up to 0x7FFF) and long packed forms, every direction. NoOp is left out: neither public

@@ -11,7 +11,7 @@ namespace AcShadow.Analysis.Doctor;
 /// motion table (its own, or the door catalog's) is posed by the animation frame current right after
 /// creation. Counts the Setups the motion pose applies to, those that fall back to the placement pose
 /// because a table, a default state, an animation or its frame is missing or unreadable (an animation short of
-/// part frames still poses the parts it has), and those whose
+/// part frames still poses the parts it has; a missing animation is dropped and another may still pose), and those whose
 /// motion pose moves a part from where the placement pose puts it.
 /// </summary>
 internal static class MotionPoseInspection
@@ -28,8 +28,8 @@ internal static class MotionPoseInspection
     {
         var diagnostics = new List<Diagnostic>();
         var pose = RetailPoseResolver.Resolve(setup, RetailPose, motions, diagnostics);
-        var fellBack = diagnostics.Any(d => FallBacks.Contains(d.Code));
         var animated = pose.Provenance.Source != PoseProvenance.PlacementSource;
+        var fellBack = !animated && diagnostics.Any(d => FallBacks.Contains(d.Code));
         if (!animated && !fellBack) return;
         t.WithMotion.Add();
         if (animated) t.MotionPosed.Add();

@@ -8,21 +8,24 @@ using AcShadow.Fixtures.Shapes;
 namespace AcShadow.Core.Poses;
 
 /// <summary>
-/// The pose retail gives a Setup's parts right after it creates the object (CPartArray::InitDefaults,
-/// CPhysicsObj::InitDefaults, CMotionTable::SetDefaultState, CSequence::get_curr_animframe):
+/// The pose retail gives a Setup's parts once it has created the object and put it in the world
+/// (CPartArray::InitDefaults, CPhysicsObj::InitDefaults, CMotionTable::SetDefaultState and GetObjectSequence,
+/// CPhysicsObj::enter_world, CPartArray::UpdateParts), played on a model of the client's sequence:
 /// <list type="number">
-/// <item>DefaultAnimation, when the Setup has one, becomes the current animation at its first frame.</item>
+/// <item>DefaultAnimation, when the Setup has one, is appended to the sequence.</item>
 /// <item>Each motion table the object is given, in order (the Setup's DefaultMotionTable, then the weenie's:
 /// `--motion-table`, else the door catalog's), enters its default state: DefaultStyle, StyleDefaults[DefaultStyle],
-/// Cycles[(style &lt;&lt; 16) | substate]. Success clears every animation and appends the cycle's; its first
-/// animation becomes current at its starting frame. A missing entry fails and leaves the sequence as it was.</item>
-/// <item>A door then takes its state's motion (closed = Off, open = On) unless it is already in it; the pose is
-/// the motion's settled one: the cycle's last (looping) animation at its starting frame.</item>
-/// <item>The current animation frame poses the parts it has frames for; with no current frame the placement
-/// frame poses them all.</item>
+/// Cycles[(style &lt;&lt; 16) | substate]. Success clears the sequence and appends the cycle's animations. A
+/// missing entry fails and leaves the sequence as it was.</item>
+/// <item>A door then takes the motion state the server sends (closed = NonCombat + Off, open = NonCombat + On):
+/// the NonCombat style command first, then the substate (CMotionInterp::apply_interpreted_movement).</item>
+/// <item>Entering the world drops every link animation (CSequence::remove_all_link_animations): the last
+/// animation appended is current, at its starting frame. An animation missing from the dat never joined the
+/// sequence (CSequence::append_animation drops its node).</item>
+/// <item>The current animation frame poses the parts it has frames for; the rest keep the frame they were made
+/// with (origin, no rotation). With no current animation the placement frame poses them all.</item>
 /// </list>
-/// Whatever is missing (a table, a key, an animation, a frame, part frames) is a diagnostic, and the parts
-/// it leaves unposed keep the placement pose.
+/// Whatever is missing (a table, a key, an animation, a frame, part frames) is a diagnostic.
 /// </summary>
 public static class RetailPoseResolver
 {
@@ -34,18 +37,19 @@ public static class RetailPoseResolver
         return walk.Run(options, placement);
     }
 
-    /// <summary>One Setup's way through the creation steps, keeping what the current animation came from.</summary>
+    /// <summary>What appended a sequence node: the pose's provenance when that node is current.</summary>
+    private sealed record Origin(string Source, uint? TableId, string? From, uint? Style, uint? Substate, uint AnimationId);
+
+    /// <summary>One Setup's way through the creation steps.</summary>
     private sealed class Walk(Setup setup, IMotionSource? motions, List<Diagnostic> diagnostics)
     {
-        private AnimationCursor? _current;
-        private string _source = PoseProvenance.PlacementSource;
-        private uint? _tableId, _style, _substate, _animationId;
-        private string? _from;
+        private readonly AnimationSequence<Origin> _sequence = new();
 
         public ResolvedPose Run(PoseSettings options, PlacementFrame? placement)
         {
-            if (setup.DefaultAnimation != 0 && Start(new AnimData(setup.DefaultAnimation, 0, -1, 30f), $"DefaultAnimation 0x{setup.DefaultAnimation:X8}") is { } first)
-                SetCurrent(first, PoseProvenance.DefaultAnimationSource, null, null, null, null, setup.DefaultAnimation);
+            if (setup.DefaultAnimation != 0)
+                Append(new AnimData(setup.DefaultAnimation, 0, -1, 30f),
+                    new Origin(PoseProvenance.DefaultAnimationSource, null, null, null, null, setup.DefaultAnimation), $"DefaultAnimation 0x{setup.DefaultAnimation:X8}");
 
             var door = DoorCatalog.Find(setup.Id);
             var tables = new List<(uint Id, string From)>();
@@ -66,7 +70,7 @@ public static class RetailPoseResolver
             var wanted = options.DoorState;
             if (door is not null && tables.Count > 0)
             {
-                var taken = active is not null && state is { } s && TakeDoorMotion(active, s, wanted, tables[^1].From);
+                var taken = active is not null && state is { } s && TakeDoorState(active, s, wanted, tables[^1].From);
                 if (active is null || state is null)
                     diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
                         $"the door cannot take its {wanted.Name()} motion: its motion table has no default state, so retail refuses every motion"));
@@ -85,17 +89,14 @@ public static class RetailPoseResolver
                 diagnostics.Add(new(PoseDiagnosticCodes.OpenDoorEthereal,
                     "an open door is ethereal in retail (no collision until it closes): these shapes are for testing, not for blocking"));
 
+            // CPhysicsObj::enter_world → MotionTableManager::HandleEnterWorld: the link animations go, so the last
+            // animation appended (first_cyclic) is current at its starting frame.
+            _sequence.RemoveAllLinkAnimations();
             var frames = CurrentPartFrames();
-            var provenance = frames is null
+            var provenance = frames is null || _sequence.Current is not { Origin: var origin }
                 ? new PoseProvenance(PosePolicy.Retail.Name(), PoseProvenance.PlacementSource, null, null, null, null, null, null, doorState, ethereal, false)
-                : new PoseProvenance(PosePolicy.Retail.Name(), _source, _tableId, _from, _style, _substate, _animationId, _current!.Value.Frame, doorState, ethereal, false);
+                : new PoseProvenance(PosePolicy.Retail.Name(), origin.Source, origin.TableId, origin.From, origin.Style, origin.Substate, origin.AnimationId, _sequence.Frame, doorState, ethereal, false);
             return new ResolvedPose(placement, frames, provenance);
-        }
-
-        private void SetCurrent(AnimationCursor cursor, string source, uint? table, string? from, uint? style, uint? substate, uint animation)
-        {
-            _current = cursor;
-            (_source, _tableId, _from, _style, _substate, _animationId) = (source, table, from, style, substate, animation);
         }
 
         private MotionTable? ReadTable(uint id, string from)
@@ -132,75 +133,151 @@ public static class RetailPoseResolver
                     $"MotionTable 0x{table.Id:X8} has no cycle for its default state (style 0x{style:X8}, substate 0x{substate:X8}, key 0x{key:X8}): its default state fails and the pose stays {Fallback}"));
                 return null;
             }
-            _current = null;
-            _source = PoseProvenance.PlacementSource;
+            _sequence.Clear();
             if (cycle.Anims.Count == 0)
                 diagnostics.Add(new(PoseDiagnosticCodes.NoDefaultState,
                     $"MotionTable 0x{table.Id:X8}'s default cycle (key 0x{key:X8}) has no animations: the sequence is cleared and nothing replaces it"));
-            foreach (var data in cycle.Anims)
-                if (Start(data, $"MotionTable 0x{table.Id:X8} cycle 0x{key:X8}") is { } node && _current is null)
-                    SetCurrent(node, PoseProvenance.MotionTableSource, table.Id, from, style, substate, data.AnimId);
+            AddMotion(table, from, cycle, style, substate, $"cycle 0x{key:X8}");
             return (style, substate);
         }
 
         /// <summary>
-        /// CMotionTable::GetObjectSequence for the door's substate: nothing changes when the door is already in
-        /// it; else the cycle under the current style (falling back to the default style) plays after its link,
-        /// and the pose it settles in is the cycle's last animation at its starting frame.
+        /// The state the server sends a door (ACE Door: NonCombat with Off, or with On) reaches the client's
+        /// CMotionInterp::apply_interpreted_movement: the style command first, then the substate, each through
+        /// CMotionTable::GetObjectSequence. The object is in no cell yet, so CMotionInterp::DoInterpretedMotion
+        /// drops each motion's link animations at once. True when the door is in the wanted state.
         /// </summary>
-        /// <summary>Whether the door took the motion (is now in the wanted state's pose).</summary>
-        private bool TakeDoorMotion(MotionTable table, (uint Style, uint Substate) state, DoorState wanted, string from)
+        private bool TakeDoorState(MotionTable table, (uint Style, uint Substate) state, DoorState wanted, string from)
         {
-            var command = wanted == DoorState.Closed ? MotionCommand.Off : MotionCommand.On;
-            if (state.Substate == command && _current is not null) return true;
-            var cycle = table.FindCycle(MotionCommand.Key(state.Style, command)) ?? table.FindCycle(MotionCommand.Key(table.DefaultStyle, command));
-            if (cycle is null || cycle.Anims.Count == 0)
+            state = TakeStyle(table, state, from);
+            _sequence.RemoveAllLinkAnimations();
+            var taken = TakeSubstate(table, state, wanted, from);
+            _sequence.RemoveAllLinkAnimations();
+            return taken;
+        }
+
+        /// <summary>
+        /// GetObjectSequence for the NonCombat style command: nothing when the door is already in NonCombat; else
+        /// the style's default substate cycle (Cycles[NonCombat, StyleDefaults[NonCombat]]) after the links out of
+        /// the current state, or failure (state and sequence untouched) when the table has no such cycle.
+        /// </summary>
+        private (uint Style, uint Substate) TakeStyle(MotionTable table, (uint Style, uint Substate) state, string from)
+        {
+            const uint style = MotionCommand.NonCombat;
+            if (state.Style == style) return state;
+            if (!table.TryGetStyleDefault(style, out var substate) || table.FindCycle(MotionCommand.Key(style, substate)) is not { } cycle)
             {
                 diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
-                    $"MotionTable 0x{table.Id:X8} has no {wanted.Name()} cycle (command 0x{command:X8}) with animations under style 0x{state.Style:X8}: the door keeps its default-state pose"));
+                    $"MotionTable 0x{table.Id:X8} has no NonCombat default cycle: the door's NonCombat style command fails and it stays in style 0x{state.Style:X8}"));
+                return state;
+            }
+            var styleDefault = table.TryGetStyleDefault(state.Style, out var d) ? d : 0;
+            var preLink = state.Substate != styleDefault ? Link(table, state.Style, state.Substate, styleDefault) : null;
+            var link = Link(table, state.Style, styleDefault, style);
+            MotionData? secondLink = null;
+            if (link is null)
+            {
+                // No direct link: through the table's default style (CMotionTable::GetObjectSequence's two-step link).
+                link = Link(table, state.Style, styleDefault, table.DefaultStyle);
+                secondLink = Link(table, table.DefaultStyle, table.TryGetStyleDefault(table.DefaultStyle, out var s) ? s : 0, style);
+            }
+            _sequence.RemoveCyclicAnims();
+            foreach (var data in new[] { preLink, link, secondLink, cycle })
+                AddMotion(table, from, data, style, substate, "NonCombat style command");
+            return (style, substate);
+        }
+
+        /// <summary>
+        /// GetObjectSequence for the door's substate (closed = Off, open = On): the cycle under the current style,
+        /// else under the default style; none (or one that may not be entered from here) fails with the sequence
+        /// untouched. Already in it: only speeds change. Else the cycle plays after its link.
+        /// </summary>
+        private bool TakeSubstate(MotionTable table, (uint Style, uint Substate) state, DoorState wanted, string from)
+        {
+            var command = wanted == DoorState.Closed ? MotionCommand.Off : MotionCommand.On;
+            var cycle = table.FindCycle(MotionCommand.Key(state.Style, command)) ?? table.FindCycle(MotionCommand.Key(table.DefaultStyle, command));
+            var styleDefault = table.TryGetStyleDefault(state.Style, out var d) ? d : 0;
+            // CMotionTable::is_allowed: a cycle with bitfield bit 0x2 is entered only from the style's default substate.
+            if (cycle is null || ((cycle.Bitfield & 2) != 0 && command != state.Substate && styleDefault != state.Substate))
+            {
+                diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
+                    $"MotionTable 0x{table.Id:X8} has no {wanted.Name()} cycle (command 0x{command:X8}) it may enter under style 0x{state.Style:X8}: the door keeps its pose"));
                 return false;
             }
-            for (var i = cycle.Anims.Count - 1; i >= 0; i--)
-                if (Start(cycle.Anims[i], $"MotionTable 0x{table.Id:X8} {wanted.Name()} cycle") is { } settled)
-                {
-                    SetCurrent(settled, PoseProvenance.MotionTableSource, table.Id, from, state.Style, command, cycle.Anims[i].AnimId);
-                    return true;
-                }
-            return false;
+            if (command == state.Substate && _sequence.HasAnims) return true;
+            var link = Link(table, state.Style, state.Substate, command);
+            MotionData? secondLink = null;
+            if (link is null)
+            {
+                link = Link(table, state.Style, state.Substate, styleDefault);
+                secondLink = Link(table, state.Style, styleDefault, command);
+            }
+            _sequence.RemoveCyclicAnims();
+            var appended = AddMotion(table, from, link, state.Style, command, $"{wanted.Name()} link");
+            appended += AddMotion(table, from, secondLink, state.Style, command, $"{wanted.Name()} link");
+            if (AddMotion(table, from, cycle, state.Style, command, $"{wanted.Name()} cycle") == 0)
+                diagnostics.Add(new(PoseDiagnosticCodes.DoorMotion,
+                    $"MotionTable 0x{table.Id:X8}'s {wanted.Name()} cycle plays no animation in the dat: retail drops the old cycle and the door is left {(appended > 0 ? "on its link's last animation" : "with no animation")}"));
+            return true;
+        }
+
+        /// <summary>CMotionTable::get_link at forward speeds: Links[(style, from)][to], else Links[style &lt;&lt; 16][to].</summary>
+        private static MotionData? Link(MotionTable table, uint style, uint from, uint to) =>
+            table.FindLink(MotionCommand.Key(style, from), to) ?? table.FindLink(unchecked(style << 16), to);
+
+        /// <summary>add_motion: appends each AnimData of the motion in order; returns how many joined the sequence.</summary>
+        private int AddMotion(MotionTable table, string from, MotionData? data, uint style, uint substate, string named)
+        {
+            var appended = 0;
+            foreach (var anim in data?.Anims ?? [])
+                if (Append(anim, new Origin(PoseProvenance.MotionTableSource, table.Id, from, style, substate, anim.AnimId), $"MotionTable 0x{table.Id:X8} {named}"))
+                    appended++;
+            return appended;
         }
 
         /// <summary>CSequence::append_animation drops a node whose animation is not there.</summary>
-        private AnimationCursor? Start(AnimData data, string named)
+        private bool Append(AnimData data, Origin origin, string named)
         {
             try
             {
-                if (motions?.ReadAnimation(data.AnimId) is { } animation) return AnimationCursor.Start(animation, data);
+                if (motions?.ReadAnimation(data.AnimId) is { } animation)
+                {
+                    _sequence.Append(AnimationNode.From(animation, data), origin);
+                    return true;
+                }
                 diagnostics.Add(new(PoseDiagnosticCodes.MissingAnimation, $"Animation 0x{data.AnimId:X8} ({named}) is not in the dat: retail drops it from the sequence"));
             }
             catch (DatFormatException e)
             {
                 diagnostics.Add(new(PoseDiagnosticCodes.UnreadableAnimation, $"Animation 0x{data.AnimId:X8} ({named}) cannot be read: {e.Message}"));
             }
-            return null;
+            return false;
         }
 
         private static string Unposed(int first, int count) => first == count - 1 ? $"part {first}" : $"parts {first}-{count - 1}";
 
-        private string Fallback => _current is null ? "the placement pose" : "where the DefaultAnimation put it";
+        private string Fallback => _sequence.Current is null ? "the placement pose" : "where the DefaultAnimation put it";
 
+        /// <summary>
+        /// CPartArray::UpdateParts poses min(Setup parts, frame parts) parts. Its first call (CPhysicsObj::InitObjectEnd)
+        /// already has the animation current (CPartArray::SetPlacementFrame before it only stores the placement frame),
+        /// so a part past the animation's part frames keeps the frame CPhysicsPart was made with: origin 0, no rotation.
+        /// </summary>
         private IReadOnlyList<Frame>? CurrentPartFrames()
         {
-            if (_current is not { } cursor) return null;
-            if (cursor.PartFrame is not { } frame)
+            if (_sequence.Current is not { Node: var node }) return null;
+            if (node.PartFrameAt(_sequence.Frame) is not { } frame)
             {
                 diagnostics.Add(new(PoseDiagnosticCodes.AnimationFrame,
-                    $"Animation 0x{cursor.Animation.Id:X8} has {cursor.Animation.PartFrames.Count} frame(s), so frame {cursor.Frame} gives no part frames: the parts keep the placement pose"));
+                    $"Animation 0x{node.Animation.Id:X8} has {node.Animation.PartFrames.Count} frame(s), so frame {_sequence.Frame} gives no part frames: the parts keep the placement pose"));
                 return null;
             }
-            if (frame.Frames.Count < setup.Parts.Count)
-                diagnostics.Add(new(PoseDiagnosticCodes.AnimationParts,
-                    $"Animation 0x{cursor.Animation.Id:X8} has part frames for {frame.Frames.Count} of the Setup's {setup.Parts.Count} parts: retail never places {Unposed(frame.Frames.Count, setup.Parts.Count)} on a new object, so the placement pose stands in"));
-            return frame.Frames;
+            var count = setup.Parts.Count;
+            if (frame.Frames.Count >= count) return frame.Frames;
+            diagnostics.Add(new(PoseDiagnosticCodes.AnimationParts,
+                $"Animation 0x{node.Animation.Id:X8} has part frames for {frame.Frames.Count} of the Setup's {count} parts: retail never places {Unposed(frame.Frames.Count, count)}; "
+                + "a part never placed keeps the frame it was made with (origin 0, no rotation), written here in the object's frame"));
+            return [.. frame.Frames, .. Enumerable.Repeat(Frame.Identity, count - frame.Frames.Count)];
         }
     }
 }

@@ -54,8 +54,9 @@ public class AuditTests
     public void Summary_counts_match_the_sample()
     {
         var s = SampleReport().Summary;
-        Assert.Equal(15, s["setups"]);
-        Assert.Equal(11, s["bsp"]);
+        // 15 Setups and the four pose-rule Setups of issue 27 (0x02000311, 0x02003700-0x02003900), each with BSP parts.
+        Assert.Equal(19, s["setups"]);
+        Assert.Equal(15, s["bsp"]);
         Assert.Equal(1, s["cylinders"]);
         Assert.Equal(3, s["spheres"]);
         Assert.Equal(0, s["none"]);
@@ -117,8 +118,8 @@ public class AuditTests
     public void Filters_and_sorting()
     {
         var onlyBsp = SampleReport(new AuditQuery(OnlyBsp: true));
-        Assert.Equal(11, onlyBsp.Rows.Count);
-        Assert.Equal(15, onlyBsp.Audited);
+        Assert.Equal(15, onlyBsp.Rows.Count);
+        Assert.Equal(19, onlyBsp.Audited);
         Assert.Equal([0x02003000u, 0x02003100u], SampleReport(new AuditQuery(FlagMismatch: true)).Rows.Select(r => r.SetupId));
         var low = SampleReport(new AuditQuery(MaxCoverage: 0.2));
         Assert.All(low.Rows, r => Assert.True(r.Coverage <= 0.2));
@@ -141,7 +142,7 @@ public class AuditTests
         Assert.Equal(0, csv.ExitCode);
         var lines = File.ReadAllLines(csvPath);
         Assert.Equal(string.Join(',', AuditColumns.All.Select(c => c.Key)), lines[0]);
-        Assert.Equal(16, lines.Length);
+        Assert.Equal(20, lines.Length); // header and the sample's 19 Setups
         Assert.StartsWith("0x0200024F,bsp,1,1,0,", lines[1]);
         Assert.Contains("wrote", csv.Out);
         Assert.Contains("family bsp", csv.Out);
@@ -151,9 +152,9 @@ public class AuditTests
         using var doc = JsonDocument.Parse(json.Out);
         Assert.Equal("acshadow.audit/1", doc.RootElement.GetProperty("format").GetString());
         var rows = doc.RootElement.GetProperty("rows").EnumerateArray().ToArray();
-        Assert.Equal(11, rows.Length);
+        Assert.Equal(15, rows.Length);
         Assert.Equal(AuditColumns.All.Select(c => c.Key), rows[0].EnumerateObject().Select(p => p.Name));
-        Assert.Equal(11, doc.RootElement.GetProperty("summary").GetProperty("bsp").GetInt32());
+        Assert.Equal(15, doc.RootElement.GetProperty("summary").GetProperty("bsp").GetInt32());
 
         var md = CliRun.Of("audit", "--format", "md", "--setups", WriteIds(dir, "0x020019FF\n0x0200ABCD\n"));
         Assert.Equal(0, md.ExitCode);
@@ -161,7 +162,7 @@ public class AuditTests
         Assert.Contains("- skipped, not in the dat: 0x0200ABCD", md.Out);
 
         var csvOut = CliRun.Of("audit", "--format", "csv");
-        Assert.Equal(16, csvOut.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
+        Assert.Equal(20, csvOut.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries).Length);
         Assert.Contains("Summary", csvOut.Error); // the summary stays out of the CSV
     }
 
@@ -172,9 +173,10 @@ public class AuditTests
         Assert.Equal(0, run.ExitCode);
         var lines = run.Out.Split('\n');
         Assert.StartsWith("Setup ", lines[0]);
-        Assert.Equal(3, lines.Count(l => l.StartsWith("0x02")));
-        Assert.Contains("Summary (3 of 3 audited Setup(s) shown)", run.Out);
-        Assert.Contains($"{DoorCatalog.Entries.Count - 3}  skipped (not in the dat or unreadable)", run.Out);
+        // The sample's 4 catalog doors: 0x0200024F, 0x02000281, 0x02000311, 0x020019FF.
+        Assert.Equal(4, lines.Count(l => l.StartsWith("0x02")));
+        Assert.Contains("Summary (4 of 4 audited Setup(s) shown)", run.Out);
+        Assert.Contains($"{DoorCatalog.Entries.Count - 4}  skipped (not in the dat or unreadable)", run.Out);
     }
 
     [Fact]
@@ -184,7 +186,7 @@ public class AuditTests
         Assert.Equal(0, run.ExitCode);
         using var doc = JsonDocument.Parse(run.Out);
         var rows = doc.RootElement.GetProperty("rows").EnumerateArray().ToArray();
-        Assert.Equal(3, rows.Length);
+        Assert.Equal(4, rows.Length);
         foreach (var row in rows)
         {
             var exact = row.GetProperty("exactModels").EnumerateArray().Select(e => e.GetString()).ToArray();

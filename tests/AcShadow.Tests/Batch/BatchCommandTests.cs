@@ -11,8 +11,9 @@ public class BatchCommandTests
     /// <summary>Every Setup the forged sample holds (src/AcShadow.Forging/Sample/sample.json).</summary>
     public static readonly string[] SampleSetups =
     [
-        "0x0200024F", "0x02000281", "0x02001000", "0x02001100", "0x020019FF", "0x02002000", "0x02003000",
-        "0x02003100", "0x02003200", "0x02003300", "0x02003400", "0x02003500", "0x02003600", "0x02005000", "0x02006000",
+        "0x0200024F", "0x02000281", "0x02000311", "0x02001000", "0x02001100", "0x020019FF", "0x02002000", "0x02003000",
+        "0x02003100", "0x02003200", "0x02003300", "0x02003400", "0x02003500", "0x02003600", "0x02003700", "0x02003800",
+        "0x02003900", "0x02005000", "0x02006000",
     ];
 
     [Fact]
@@ -58,7 +59,7 @@ public class BatchCommandTests
             Assert.Equal(JsonValueKind.Null, inputs.GetProperty("cellDat").ValueKind);
             Assert.Equal("retail", inputs.GetProperty("policy").GetString());
             Assert.True(inputs.GetProperty("selection").GetProperty("all").GetBoolean());
-            Assert.Contains("15 setup(s)", run.Out);
+            Assert.Contains("19 setup(s)", run.Out);
             Assert.Contains("wall time", run.Out);
         }
     }
@@ -72,8 +73,8 @@ public class BatchCommandTests
         using (dir)
         {
             Assert.Equal(0, run.ExitCode);
-            // The catalog's sample doors (0x0200024F, 0x02000281, 0x020019FF) plus the file's item.
-            Assert.Equal(["setups/0x0200024F.shadow.json", "setups/0x02000281.shadow.json", "setups/0x020019FF.shadow.json", "setups/0x02002000.shadow.json"],
+            // The catalog's sample doors (0x0200024F, 0x02000281, 0x02000311, 0x020019FF) plus the file's item.
+            Assert.Equal(["setups/0x0200024F.shadow.json", "setups/0x02000281.shadow.json", "setups/0x02000311.shadow.json", "setups/0x020019FF.shadow.json", "setups/0x02002000.shadow.json"],
                 dir.Files().Where(f => f.StartsWith("setups/")));
             using var index = JsonDocument.Parse(Text(dir, "index.json"));
             var selection = index.RootElement.GetProperty("inputs").GetProperty("selection");
@@ -96,7 +97,7 @@ public class BatchCommandTests
             Assert.Contains("setups/0x020019FF.shadow.json", dir.Files());
             Assert.DoesNotContain("setups/0x0200ABCD.shadow.json", dir.Files());
             Assert.Contains("skipped 1 (not in the dat; from setups-file): 0x0200ABCD", run.Out);
-            var missingDoors = DoorCatalog.Entries.Count - 3;
+            var missingDoors = DoorCatalog.Entries.Count - 4; // the sample holds 4 catalog doors
             Assert.Contains($"skipped {missingDoors} (not in the dat; from doors)", run.Out);
 
             using var index = JsonDocument.Parse(Text(dir, "index.json"));

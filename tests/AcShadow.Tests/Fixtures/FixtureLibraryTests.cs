@@ -20,7 +20,7 @@ public class FixtureLibraryTests
         var onDisk = Directory.GetFiles(Committed.Folder, "*.json", SearchOption.AllDirectories)
             .Select(f => Path.GetRelativePath(Committed.Folder, f).Replace('\\', '/')).Where(p => p != "index.json").Order().ToArray();
         Assert.Equal(onDisk, index.Files.Select(f => f.Path).Order().ToArray());
-        Assert.Equal(15, index.OfKind(FixtureKind.Shadow).Count());
+        Assert.Equal(19, index.OfKind(FixtureKind.Shadow).Count()); // the sample's 19 Setups
         Assert.Single(index.OfKind(FixtureKind.Movement));
     }
 

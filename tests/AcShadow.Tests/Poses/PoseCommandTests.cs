@@ -88,10 +88,11 @@ public class PoseCommandTests
     [Fact]
     public void An_animation_short_of_part_frames_poses_what_it_has_and_says_so()
     {
-        // 0x09003500's Ready cycle plays 0x03003500, one part frame (pedestal at z 0.25) for two parts; the column keeps Resting's z 0.5.
+        // 0x09003500's Ready cycle plays 0x03003500, one part frame (pedestal at z 0.25) for two parts; retail never
+        // places the column, which keeps the frame it was made with: origin 0, no rotation (not Resting's z 0.5).
         var dump = Dump("0x02003500");
         AssertAt(dump.Set.Shapes[0], new Vector3(0, 0, 0.25f), Quaternion.Identity);
-        AssertAt(dump.Set.Shapes[1], new Vector3(0, 0, 0.5f), Quaternion.Identity);
+        AssertAt(dump.Set.Shapes[1], Vector3.Zero, Quaternion.Identity);
         Assert.Equal([PoseDiagnosticCodes.AnimationParts, PoseDiagnosticCodes.PoseMoved], dump.Codes.Order(StringComparer.Ordinal));
     }
 
@@ -119,10 +120,12 @@ public class PoseCommandTests
         var header = lines[0].Split(',');
         int Column(string name) => Array.IndexOf(header, name);
         var rows = lines[1..].Select(l => l.Split(',')).ToArray();
-        // By hand from the sample spec: the door (leaf 5 cm), the animated static (pedestal 0.25 m up) and the
-        // DefaultAnimation Setup (column 0.3 m along x); the two doors on the broken table keep their placement.
-        Assert.Equal(["0x020019FF", "0x02003500", "0x02003600"], rows.Select(r => r[Column("id")]));
-        Assert.Equal(["motion-table", "motion-table", "default-animation"], rows.Select(r => r[Column("pose")]));
+        // By hand from the sample spec: the style door (2 cm along x), the door (leaf 5 cm), the animated static
+        // (pedestal 0.25 m up), the DefaultAnimation Setup (column 0.3 m along x), the three-animation cycle (0.3 m up),
+        // the cycle with an absent animation (0.7 m along y) and the short DefaultAnimation (pedestal 0.2 m up);
+        // the two doors on the broken table keep their placement.
+        Assert.Equal(["0x02000311", "0x020019FF", "0x02003500", "0x02003600", "0x02003700", "0x02003800", "0x02003900"], rows.Select(r => r[Column("id")]));
+        Assert.Equal(["motion-table", "motion-table", "motion-table", "default-animation", "motion-table", "motion-table", "default-animation"], rows.Select(r => r[Column("pose")]));
         Assert.All(rows, r => Assert.Equal("yes", r[Column("poseDiffers")]));
     }
 

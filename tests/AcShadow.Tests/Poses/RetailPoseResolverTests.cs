@@ -92,4 +92,25 @@ public class RetailPoseResolverTests
             Assert.Contains(diagnostics, d => d.Code == code);
         }
     }
+    [Fact]
+    public void A_door_whose_off_cycle_animation_is_absent_is_left_on_its_link()
+    {
+        // Table: NonCombat starts On (Cycles[0x003D000B] = [0x03000F00 forward], x = 0); Cycles[0x003D000C] = [0x03000F09],
+        // not in the dat; Links[0x003D000B][Off] = [0x03000F01 at -30 fps]. Closing: remove_cyclic_anims drops the On
+        // node (current, with none before it), the link is appended and becomes current, the Off cycle appends
+        // nothing, so the link is first_cyclic: backwards from HighFrame -1 -> 4 of its 5 frames, x = 4.
+        var on = MotionCommand.Key(MotionCommand.NonCombat, MotionCommand.On);
+        var table = new MotionTable(0x09000F00, MotionCommand.NonCombat, [new(MotionCommand.NonCombat, MotionCommand.On)],
+            [new(on, new MotionData(0, [new AnimData(0x03000F00, 0, -1, 30f)], null, null)),
+             new(MotionCommand.Key(MotionCommand.NonCombat, MotionCommand.Off), new MotionData(0, [new AnimData(0x03000F09, 0, -1, 30f)], null, null))],
+            [], [new(on, [new(MotionCommand.Off, new MotionData(0, [new AnimData(0x03000F01, 0, -1, -30f)], null, null))])]);
+        var door = OnePart with { Id = 0x020019FF };
+        var diagnostics = new List<Diagnostic>();
+        var settings = new ShapeBuildOptions(ShapePolicy.Retail) { MotionTable = 0x09000F00 }.PoseSettings;
+        var pose = RetailPoseResolver.Resolve(door, settings, new Motions(table, Steps(0x03000F00, 3), Steps(0x03000F01, 5)), diagnostics);
+        Assert.Equal((0x03000F01u, 4, MotionCommand.Off, "closed"), (pose.Provenance.AnimationId, pose.Provenance.Frame, pose.Provenance.Substate, pose.Provenance.DoorState));
+        Assert.Equal(new Vector3(4, 0, 0), pose.MotionFrames![0].Position);
+        Assert.Contains(diagnostics, d => d.Code == PoseDiagnosticCodes.MissingAnimation && d.Message.Contains("0x03000F09"));
+        Assert.Contains(diagnostics, d => d.Code == PoseDiagnosticCodes.DoorMotion && d.Message.Contains("link"));
+    }
 }

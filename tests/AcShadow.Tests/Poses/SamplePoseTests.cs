@@ -89,15 +89,79 @@ public class SamplePoseTests
     }
 
     [Fact]
-    public void An_animation_with_fewer_part_frames_poses_those_parts_and_leaves_the_rest_at_placement()
+    public void An_animation_with_fewer_part_frames_poses_those_parts_and_leaves_the_rest_where_they_were_made()
     {
-        // 0x09003500's Ready cycle plays 0x03003500 (1 part frame): pedestal at (0, 0, 0.25); the column keeps
-        // Resting's (0, 0, 0.5). The Setup's DefaultAnimation is replaced by the table's default state.
+        // 0x09003500's Ready cycle plays 0x03003500 (1 part frame): pedestal at (0, 0, 0.25). UpdateParts stops at
+        // part 0, and its first call (InitObjectEnd) already poses by the animation, so the column keeps its
+        // CPhysicsPart frame, origin 0 and no rotation, not Resting's (0, 0, 0.5). The Setup's DefaultAnimation is
+        // replaced by the table's default state.
         var set = Build(0x02003500);
         AssertAt(set.Shapes[0], new(0, 0, 0.25f), Quaternion.Identity);
-        AssertAt(set.Shapes[1], new(0, 0, 0.5f), Quaternion.Identity);
+        AssertAt(set.Shapes[1], Vector3.Zero, Quaternion.Identity);
         Assert.Equal((PoseProvenance.MotionTableSource, 0x09003500u, "setup", 0x03003500u), (set.Pose.Source, set.Pose.MotionTableId, set.Pose.MotionTableFrom, set.Pose.AnimationId));
         Assert.Contains(set.Diagnostics, d => d.Code == PoseDiagnosticCodes.AnimationParts && d.Message.Contains("1 of the Setup's 2 parts"));
+        Assert.Contains(set.Diagnostics, d => d.Code == PoseDiagnosticCodes.PoseMoved && d.Message.Contains("part 1 by 0.5 m"));
+    }
+
+    [Fact]
+    public void A_default_animation_short_of_part_frames_leaves_the_last_part_at_the_origin_unturned()
+    {
+        // 0x02003900: DefaultAnimation 0x03003900 (2 part frames, 1 frame) for 3 parts; no motion table.
+        // Frame 0: pedestal (0, 0, 0.2), L-block (-0.3, -0.3, 0.95) turned 45 deg about Z. The column (Resting:
+        // (0.6, 0.2, 1.0) turned 90 deg about X) gets no frame: origin 0, no rotation.
+        var set = Build(0x02003900);
+        Assert.Equal(3, set.Shapes.Count);
+        AssertAt(set.Shapes[0], new(0, 0, 0.2f), Quaternion.Identity);
+        AssertAt(set.Shapes[1], new(-0.3f, -0.3f, 0.95f), new Quaternion(0, 0, MathF.Sin(MathF.PI / 8), MathF.Cos(MathF.PI / 8)));
+        AssertAt(set.Shapes[2], Vector3.Zero, Quaternion.Identity);
+        Assert.Equal((PoseProvenance.DefaultAnimationSource, 0x03003900u, 0), (set.Pose.Source, set.Pose.AnimationId, set.Pose.Frame));
+        Assert.Contains(set.Diagnostics, d => d.Code == PoseDiagnosticCodes.AnimationParts && d.Message.Contains("2 of the Setup's 3 parts") && d.Message.Contains("part 2"));
+    }
+
+    [Fact]
+    public void A_default_cycle_of_three_animations_is_posed_by_its_last_once_in_the_world()
+    {
+        // 0x09003700: Cycles[0x003D0003] = [0x03003701 at 30 fps, 0x03003702 at 30 fps, 0x03003703 at -30 fps].
+        // add_motion makes 0x03003701 current (frame 0: x 0.1) and 0x03003703 first_cyclic; entering the world
+        // drops the two before it, so 0x03003703 is current at its starting frame: backwards, HighFrame -1 -> 2 of
+        // its 3 frames, and frame 2 is (0, 0, 0.3) turned 90 deg about Z.
+        var set = Build(0x02003700);
+        AssertAt(Assert.Single(set.Shapes), new(0, 0, 0.3f), new Quaternion(0, 0, Half, Half));
+        Assert.Equal(new PoseProvenance("retail", PoseProvenance.MotionTableSource, 0x09003700, "setup", MotionCommand.NonCombat, MotionCommand.Ready,
+            0x03003703, 2, null, false, true), set.Pose);
+        Assert.DoesNotContain(set.Diagnostics, d => d.Code != PoseDiagnosticCodes.PoseMoved);
+    }
+
+    [Fact]
+    public void A_door_whose_table_starts_in_hand_combat_takes_the_noncombat_style_before_its_substate()
+    {
+        // 0x0900002C (the catalog's table for 0x02000311): default state HandCombat Ready, Cycles[0x003C0003] =
+        // [0x0300002C] (z 0.4). The NonCombat style command: StyleDefaults[NonCombat] = Off, Cycles[0x003D000C] =
+        // [0x0300002D] after the link Links[0x003C0003][0x8000003D] = [0x0300002F], which is dropped; Off is then
+        // already the substate. Frame 0 of 0x0300002D: (0.02, 0, 0). Without the style command Off would have
+        // played Cycles[0x003C000C] = 0x0300002F, (0, 0, -1).
+        var closed = Build(0x02000311);
+        AssertAt(Assert.Single(closed.Shapes), new(0.02f, 0, 0), Quaternion.Identity);
+        Assert.Equal(new PoseProvenance("retail", PoseProvenance.MotionTableSource, 0x0900002C, "door-catalog", MotionCommand.NonCombat, MotionCommand.Off,
+            0x0300002D, 0, "closed", false, true), closed.Pose);
+        Assert.DoesNotContain(closed.Diagnostics, d => d.Code == PoseDiagnosticCodes.DoorMotion);
+
+        // Open: NonCombat Off as above, then On: Cycles[0x003D000B] = [0x0300002E], frame 0 (0, -0.5, 0) turned 90 deg about Z.
+        var open = Build(0x02000311, state: DoorState.Open);
+        AssertAt(Assert.Single(open.Shapes), new(0, -0.5f, 0), new Quaternion(0, 0, Half, Half));
+        Assert.Equal((MotionCommand.NonCombat, MotionCommand.On, 0x0300002Eu, "open", true), (open.Pose.Style, open.Pose.Substate, open.Pose.AnimationId, open.Pose.DoorState, open.Pose.Ethereal));
+    }
+
+    [Fact]
+    public void A_cycle_animation_missing_from_the_dat_never_joins_the_sequence()
+    {
+        // 0x09003800: Cycles[0x003D0003] = [0x03003801, 0x03003802 from LowFrame 1, 0x03003803]; 0x03003803 is not
+        // in the dat, so append_animation drops it and 0x03003802 is first_cyclic: current once in the world, at
+        // frame 1, (0, 0.7, 0). (ACE keeps an empty node for it instead, current, and poses nothing.)
+        var set = Build(0x02003800);
+        AssertAt(Assert.Single(set.Shapes), new(0, 0.7f, 0), Quaternion.Identity);
+        Assert.Equal((0x03003802u, 1), (set.Pose.AnimationId, set.Pose.Frame));
+        Assert.Contains(set.Diagnostics, d => d.Code == PoseDiagnosticCodes.MissingAnimation && d.Message.Contains("0x03003803"));
     }
 
     [Fact]
@@ -117,8 +181,9 @@ public class SamplePoseTests
         using var portal = SampleDat.OpenPortal();
         var plan = BatchPlanner.Plan(new BatchSelection(false, true, null, null), portal, null, DoorCatalog.SetupIds);
         var report = AuditRunner.Run(portal, plan, new AuditQuery { PoseDiffers = true }, 2);
-        Assert.Equal([0x020019FFu, 0x02003500u, 0x02003600u], report.Rows.Select(r => r.SetupId));
-        Assert.Equal(["motion-table", "motion-table", "default-animation"], report.Rows.Select(r => r.PoseSource));
+        // The style door, and the new rule Setups: each is posed away from its Resting frame at the origin.
+        Assert.Equal([0x02000311u, 0x020019FFu, 0x02003500u, 0x02003600u, 0x02003700u, 0x02003800u, 0x02003900u], report.Rows.Select(r => r.SetupId));
+        Assert.Equal(["motion-table", "motion-table", "motion-table", "default-animation", "motion-table", "motion-table", "default-animation"], report.Rows.Select(r => r.PoseSource));
     }
 
     [Fact]
@@ -129,8 +194,11 @@ public class SamplePoseTests
         foreach (var id in portal.ListIds(DatObjectKind.Setup)) engine.ExportSetup(id);
         var distinct = portal.MotionObjectsDecoded;
         // Read: the three tables (0x09000016 serves two doors), the closed door frame 0x03000100, 0x03003500, and
-        // 0x03003600 (the DefaultAnimation of two Setups). Never needed closed: the open, swing and unreachable animations.
-        Assert.Equal(6, distinct);
+        // 0x03003600 (the DefaultAnimation of two Setups): 6. Never needed closed: the open, swing and unreachable animations.
+        // The rule Setups add 12: 0x09003700 and its three animations; 0x0900002C with its HandCombat Ready
+        // animation, the link 0x0300002F and NonCombat's Off cycle 0x0300002D (not the open 0x0300002E);
+        // 0x09003800 and the two animations it has (the absent 0x03003803 decodes nothing); 0x03003900.
+        Assert.Equal(18, distinct);
         foreach (var id in portal.ListIds(DatObjectKind.Setup)) engine.ExportSetup(id);
         Assert.Equal(distinct, portal.MotionObjectsDecoded);
     }
@@ -146,6 +214,6 @@ public class SamplePoseTests
         var options = new ShapeBuildOptions(ShapePolicy.Retail);
         var result = BatchRunner.Run(source, options, plan, new BatchInputs(source.Info, null, options.Policy, 1f, selection), jobs: 2);
         Assert.Equal(portal.ListIds(DatObjectKind.Setup).Count, result.SetupsWritten);
-        Assert.Equal(6, source.MotionObjectsDecoded);
+        Assert.Equal(18, source.MotionObjectsDecoded);
     }
 }

@@ -10,11 +10,19 @@ namespace AcShadow.Forge.Scale;
 /// few dozen creature tables, and one static in ten an animation (a DefaultAnimation, or one in twenty a
 /// table of its own kind). Tables and animations are shared across Setups as in a retail dat. Drawn from
 /// a Random of its own, so adding motion does not change the geometry the seed gives.
+/// The pose rules of issue 27 each get a table of their own, with fixed ids, and draw nothing from the Random:
+/// catalog door table <see cref="StyleDoorTable"/> starts in HandCombat (the NonCombat style command matters);
+/// the first static gets <see cref="ThreeAnimationTable"/> (a default cycle of three animations), the second
+/// <see cref="AbsentAnimationTable"/> (its cycle's last animation is not in the dat), and the first other static
+/// of two or more parts <see cref="ShortAnimationTable"/> (part frames for part 0 only).
 /// </summary>
 internal static class ScaleMotions
 {
-    private const uint NonCombat = 0x8000003D, Ready = 0x41000003, On = 0x4000000B, Off = 0x4000000C;
+    private const uint NonCombat = 0x8000003D, HandCombat = 0x8000003C, Ready = 0x41000003, On = 0x4000000B, Off = 0x4000000C;
     private const int CreatureTables = 40, StaticAnimations = 60, StaticTables = 20, MaxParts = ScaleSpecGenerator.MaxParts;
+    public const uint StyleDoorTable = 0x0900002C, ThreeAnimationTable = 0x09000F01, AbsentAnimationTable = 0x09000F02, ShortAnimationTable = 0x09000F03;
+    /// <summary>The rule tables' animations: 0x03000F01-0x03000F03 the three-animation cycle, 0x03000F04-0x03000F05 (and the absent 0x03000F06) the absent case, 0x03000F07 the short one.</summary>
+    public const uint FirstRuleAnimation = 0x03000F01;
 
     public static (List<MotionTableSpec> Tables, List<AnimationSpec> Animations) Assign(
         IReadOnlyList<SetupSpec> doors, IReadOnlyList<SetupSpec> statics, IReadOnlyList<SetupSpec> creatures, int seed)
@@ -57,7 +65,16 @@ internal static class ScaleMotions
         {
             var closed = door.Placements["Resting"]!;
             var open = door.Placements["Default"]!;
-            tables.Add(Table(table, Off, [(Off, NewAnim(closed.Count, 1, (_, p) => closed[p])), (On, NewAnim(open.Count, 1, (_, p) => open[p]))]));
+            var doorTable = Table(table, Off, [(Off, NewAnim(closed.Count, 1, (_, p) => closed[p])), (On, NewAnim(open.Count, 1, (_, p) => open[p]))]);
+            // Starts in HandCombat Ready, standing open: only the NonCombat style command before Off closes it.
+            if (table == Hex(StyleDoorTable))
+                doorTable = doorTable with
+                {
+                    DefaultStyle = Hex(HandCombat),
+                    StyleDefaults = [new StyleDefaultSpec { Style = Hex(HandCombat), Substate = Hex(Ready) }, .. doorTable.StyleDefaults],
+                    Cycles = [new MotionSpec { Style = Hex(HandCombat), Motion = Hex(Ready), Anims = doorTable.Cycles[1].Anims }, .. doorTable.Cycles],
+                };
+            tables.Add(doorTable);
         }
 
         // Creatures: a Ready cycle of 10 frames posing up to 30 parts (a table serves creatures of any part count).
@@ -77,7 +94,47 @@ internal static class ScaleMotions
                 case 0: item.DefaultMotionTable = staticTables[random.Next(staticTables.Length)].Id; break;
                 case 1: item.DefaultAnimation = staticAnims[random.Next(staticAnims.Length)]; break;
             }
+        AddRuleTables(statics, tables, animations);
         return (tables, animations);
+    }
+
+    /// <summary>Part p of every frame at (x, y, 0.1 p): each rule animation's frames are told apart by x and y alone.</summary>
+    private static AnimationSpec RuleAnimation(uint id, int parts, params (double X, double Y)[] frames) => new()
+    {
+        Id = Hex(id),
+        Parts = parts,
+        Frames = frames.Select(f => (IReadOnlyList<FrameSpec>?)Enumerable.Range(0, parts).Select(p => At(f.X, f.Y, 0.1 * p)).ToArray()).ToArray(),
+    };
+
+    private static void AddRuleTables(IReadOnlyList<SetupSpec> statics, List<MotionTableSpec> tables, List<AnimationSpec> animations)
+    {
+        var shortStatic = statics.Skip(2).FirstOrDefault(s => s.Parts.Count >= 2);
+        if (statics.Count < 2 || shortStatic is null) return;
+        var a = FirstRuleAnimation;
+        animations.AddRange(
+        [
+            RuleAnimation(a, MaxParts, (0.1, 0), (0.2, 0)),
+            RuleAnimation(a + 1, MaxParts, (0, 0.1), (0, 0.2)),
+            RuleAnimation(a + 2, MaxParts, (0.3, 0.1), (0.3, 0.2), (0.3, 0.3)),
+            RuleAnimation(a + 3, MaxParts, (0.4, 0)),
+            RuleAnimation(a + 4, MaxParts, (0, 0.4), (0, 0.5)),
+            RuleAnimation(a + 6, 1, (0.05, 0.05)),
+        ]);
+        MotionTableSpec RuleTable(uint id, IReadOnlyList<AnimDataSpec> anims, IReadOnlyList<string>? missing = null) => new()
+        {
+            Id = Hex(id),
+            DefaultStyle = Hex(NonCombat),
+            StyleDefaults = [new StyleDefaultSpec { Style = Hex(NonCombat), Substate = Hex(Ready) }],
+            Cycles = [new MotionSpec { Style = Hex(NonCombat), Motion = Hex(Ready), Anims = anims }],
+            MissingAnimations = missing ?? [],
+        };
+        tables.AddRange(
+        [
+            RuleTable(ThreeAnimationTable, [new() { Anim = Hex(a) }, new() { Anim = Hex(a + 1) }, new() { Anim = Hex(a + 2), Framerate = -30 }]),
+            RuleTable(AbsentAnimationTable, [new() { Anim = Hex(a + 3) }, new() { Anim = Hex(a + 4), LowFrame = 1 }, new() { Anim = Hex(a + 5) }], [Hex(a + 5)]),
+            RuleTable(ShortAnimationTable, [new() { Anim = Hex(a + 6) }]),
+        ]);
+        (statics[0].DefaultMotionTable, statics[1].DefaultMotionTable, shortStatic.DefaultMotionTable) = (Hex(ThreeAnimationTable), Hex(AbsentAnimationTable), Hex(ShortAnimationTable));
     }
 
     private static FrameSpec At(double x, double y, double z) => new() { Origin = [x, y, z] };
