@@ -77,8 +77,11 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     {
         // One bound straddling the edge x = 24 and one wholly in cell (2, 0).
         var partition = LandCellPartition.Build([(new Vector3(24f, 10f, 0f), 1f), (new Vector3(60f, 10f, 0f), 2f)]);
-        Assert.True(partition.Reach(new Vector3(23.5f, 10f, 0f), 0.25f, out var near));
+        // 0.5 m from the edge: a 0.6 m sphere reaches over it, a 0.25 m one does not.
+        Assert.True(partition.Reach(new Vector3(23.5f, 10f, 0f), 0.6f, out var near));
         Assert.Equal(new LandCellPartition.CellRange(0, 0, 1, 0), near);
+        Assert.True(partition.Reach(new Vector3(23.5f, 10f, 0f), 0.25f, out var inside));
+        Assert.Equal(new LandCellPartition.CellRange(0, 0, 0, 0), inside);
         var asked = new Asked();
         Assert.False(partition.Any(new Vector3(24f, 10f, 0f), 0.5f, ref asked));
         Assert.Equal(new[] { 0 }, asked.Entries);
