@@ -27,12 +27,16 @@ internal sealed record CompiledSceneReport(
 /// The scene chart's totals: every placed object's and every cell's probes moved into the landblock,
 /// asked of the whole scene with every object as retail and with every object as compiled (cells are
 /// retail in both) — how many positions, how many agree, the time per mover position of each, and the
-/// counted operations per position of each (<see cref="SceneCost"/>: the same on every run).
+/// counted operations per position of each (<see cref="SceneCost"/>: the same on every run). Both ask
+/// through the land-cell partition; <see cref="Exhaustive"/> and <see cref="ExhaustiveOps"/> are all-retail
+/// asked of every object and cell, the walk the partition replaced.
 /// </summary>
 internal sealed record SceneTotals(int Positions, int Agree, int FalsePass, int FalseBlock, TimingStats Retail, TimingStats Compiled, int RetailShapes, int CompiledShapes)
 {
     public double RetailOps { get; init; }
     public double CompiledOps { get; init; }
+    public TimingStats Exhaustive { get; init; } = TimingStats.Of([]);
+    public double ExhaustiveOps { get; init; }
 
     public double AgreementPercent => Positions == 0 ? 100.0 : 100.0 * Agree / Positions;
 }

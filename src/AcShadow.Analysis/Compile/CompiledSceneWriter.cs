@@ -58,10 +58,12 @@ internal static class CompiledSceneWriter
                 .Add("falsePass", totals.FalsePass)
                 .Add("falseBlock", totals.FalseBlock)
                 .Add("retailOpsPerPosition", Ops(totals.RetailOps))
-                .Add("compiledOpsPerPosition", Ops(totals.CompiledOps)))
+                .Add("compiledOpsPerPosition", Ops(totals.CompiledOps))
+                .Add("exhaustiveOpsPerPosition", Ops(totals.ExhaustiveOps)))
             .Add("timing", new JsonObj()
                 .Add("retailMedianNsPerPosition", JsonNum.Of(totals.Retail.MedianNs))
-                .Add("compiledMedianNsPerPosition", JsonNum.Of(totals.Compiled.MedianNs)))
+                .Add("compiledMedianNsPerPosition", JsonNum.Of(totals.Compiled.MedianNs))
+                .Add("exhaustiveMedianNsPerPosition", JsonNum.Of(totals.Exhaustive.MedianNs)))
             .Add("objects", objects)
             .Add("cells", JsonArr.Of(report.Cells, c => CellJson(c, scene)));
         return CanonicalJsonWriter.WriteUtf8(json);

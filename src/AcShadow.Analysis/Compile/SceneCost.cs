@@ -9,53 +9,95 @@ namespace AcShadow.Analysis.Compile;
 
 /// <summary>
 /// What asking the whole scene about one mover position costs, counted as <see cref="QueryCost"/> counts
-/// an object (one unit a distance evaluation): each placed object's bounding sphere 1, and for a position
-/// inside it the turn into the object's frame and its model's count; then each cell's turn into its frame
-/// and its tree's count; stopping at the first that blocks, as <see cref="SceneQuery"/> does.
+/// an object (one unit a distance evaluation), along the walk <see cref="SceneQuery"/> takes: the sphere's
+/// land cells found <see cref="LandCellReach"/>, each land cell visited <see cref="LandCellVisit"/>, then
+/// for each object registered there its bounding sphere 1 and, for a position inside it, the turn into the
+/// object's frame and its model's count; for each indoor cell registered there its root sphere in the
+/// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
+/// stopping at the first that blocks. <see cref="SceneWalk.Exhaustive"/> counts the old walk
+/// instead: every object's bounding sphere, then every cell.
 /// </summary>
 internal static class SceneCost
 {
+    /// <summary>Finding the sphere's land cells: four floors and a clamp, about one distance evaluation.</summary>
+    public const int LandCellReach = 1;
+
+    /// <summary>Visiting one land cell's list (its load and the once-only check of each entry it holds is in the entry's 1).</summary>
+    public const int LandCellVisit = 1;
+
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample, SceneWalk walk = SceneWalk.Partitioned)
     {
         if (positions.Count == 0 || sample < 1) return 0;
         var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
         {
             var frame = new PartPose(o.Placed.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(o.Placed.Object.Frame.Rotation), 1f);
-            return (Frame: frame, Bound: frame.ToEntity(o.Center), o.Radius, Counter: new QueryCost.Counter(o.Model.Shapes));
+            return new ObjectCounter(frame, frame.ToEntity(o.Center), o.Radius, new QueryCost.Counter(o.Model.Shapes));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)]))).ToArray();
+        var query = SceneCompiler.Query(placed, compiled, cells, pick);
+        var partition = query.Partition;
+        CellReach[] cellReach = [.. query.Cells.Select(c => CellReach.Of(c.Query.Bound))];
         var n = Math.Min(sample, positions.Count);
         long total = 0;
         for (var i = 0; i < n; i++)
         {
             var p = positions[(int)((long)i * positions.Count / n)];
-            total += Count(p.Center, p.Radius);
+            total += walk == SceneWalk.Exhaustive ? CountAll(p.Center, p.Radius) : CountPartitioned(p.Center, p.Radius);
         }
         return (double)total / n;
 
-        long Count(Vector3 center, float radius)
+        long CountPartitioned(Vector3 center, float radius)
         {
-            long ops = 0;
-            foreach (var o in objects)
-            {
-                ops++;
-                float dx = center.X - o.Bound.X, dy = center.Y - o.Bound.Y, dz = center.Z - o.Bound.Z, sum = o.Radius + radius;
-                if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) continue;
-                var (local, r) = o.Frame.ToLocal(center, radius);
-                ops += QueryCost.Transform + o.Counter.Count(local, r, out var blocked);
-                if (blocked) return ops;
-            }
-            foreach (var (frame, counter) in cellCounters)
-            {
-                var (local, r) = frame.ToLocal(center, radius);
-                // The cell's own turn, then the tree's count (which counts a part's turn of its own, at identity here).
-                ops += counter.Count(local, r, out var blocked);
-                if (blocked) return ops;
-            }
-            return ops;
+            if (!SphereBounds.IsValidProbe(center, radius)) return 0;
+            var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = LandCellReach };
+            partition.Any(center, radius, ref counting);
+            return counting.Ops;
         }
+
+        long CountAll(Vector3 center, float radius)
+        {
+            var counting = new Counting(objects, cellCounters, null, center, radius);
+            for (var e = 0; e < objects.Length + cellCounters.Length; e++)
+                if (counting.Test(e)) break;
+            return counting.Ops;
+        }
+    }
+
+    private sealed record ObjectCounter(PartPose Frame, Vector3 Bound, float Radius, QueryCost.Counter Counter);
+
+    /// <summary>One position's count along a walk (<paramref name="cellReach"/> null: the exhaustive walk, which turns into every cell).</summary>
+    private struct Counting(ObjectCounter[] objects, (PartPose Frame, QueryCost.Counter Counter)[] cells, CellReach[]? cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
+    {
+        public long Ops;
+
+        public bool Test(int entry)
+        {
+            if (entry >= objects.Length)
+            {
+                var cell = entry - objects.Length;
+                if (cellReach is not null)
+                {
+                    Ops++;
+                    if (!cellReach[cell].Reaches(center, radius)) return false;
+                }
+                var (frame, counter) = cells[cell];
+                var (cellLocal, cellRadius) = frame.ToLocal(center, radius);
+                // The cell's own turn, then the tree's count (which counts a part's turn of its own, at identity here).
+                Ops += counter.Count(cellLocal, cellRadius, out var cellBlocked);
+                return cellBlocked;
+            }
+            var o = objects[entry];
+            Ops++;
+            float dx = center.X - o.Bound.X, dy = center.Y - o.Bound.Y, dz = center.Z - o.Bound.Z, sum = o.Radius + radius;
+            if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
+            var (local, r) = o.Frame.ToLocal(center, radius);
+            Ops += QueryCost.Transform + o.Counter.Count(local, r, out var blocked);
+            return blocked;
+        }
+
+        public void Visit() => Ops += LandCellVisit;
     }
 
     private static readonly Fixtures.Shapes.ShadowShape CellShape = new(Fixtures.Shapes.ShapeSource.Part, 0, null, Fixtures.Shapes.CollisionType.Bsp,

@@ -16,6 +16,7 @@ internal sealed class CellOverlapQuery : ISphereOverlap
 {
     private readonly ClientFrameMatrix _frame;
     private readonly BspSphereQuery _bsp;
+    private readonly bool _unitRotation;
 
     /// <param name="physics">The cell structure's physics polygons and PhysicsBSP, in the cell's own frame.</param>
     /// <param name="origin">The cell's origin in the frame the queries use (landblock-relative, as the dat stores it).</param>
@@ -27,6 +28,25 @@ internal sealed class CellOverlapQuery : ISphereOverlap
             throw new ArgumentException($"a cell frame needs a finite origin and a non-zero rotation; got {origin}, {orientation}");
         _frame = ClientFrameMatrix.From(new Frame(origin, ClientFrameMatrix.PlacedRotation(orientation)));
         _bsp = BspSphereQuery.From(physics);
+        _unitRotation = MathF.Abs(orientation.LengthSquared() - 1f) <= 1e-4f;
+    }
+
+    /// <summary>
+    /// The tree's root sphere in the frame of the cell's origin, widened by 1e-3 of its reach for the rounding
+    /// of the cell's turn: no sphere outside it gets past the root (CGfxObj::find_obj_collisions' broad phase).
+    /// Null when there is none to give: no tree, or a rotation so far from unit length that Frame::cache's
+    /// matrix stretches distances.
+    /// </summary>
+    public (Vector3 Center, float Radius)? Bound
+    {
+        get
+        {
+            var nodes = _bsp.Bsp.Nodes;
+            if (nodes.Length == 0 || !_unitRotation) return null;
+            var root = nodes[0];
+            var reach = root.SphereRadius + root.SphereCenter.Length();
+            return (_frame.LocalToGlobal(root.SphereCenter), root.SphereRadius + 1e-3f * reach);
+        }
     }
 
     /// <summary>Does a sphere at this centre (same frame as the cell's origin) touch one of the cell's physics polygons?</summary>

@@ -42,6 +42,9 @@ internal sealed class PlacedQuery
         _reach = (float)(boundRadius + off * (boundRadius + fromOrigin));
     }
 
+    /// <summary>The bounding sphere in the landblock's frame, as <see cref="Overlaps"/> tests it first.</summary>
+    public (Vector3 Center, float Radius) LandblockBound => (_boundInLandblock, BoundRadius);
+
     /// <summary>Does a sphere at this landblock-relative centre touch the object?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {

@@ -5,31 +5,73 @@ namespace AcShadow.Fixtures.Scenes;
 
 /// <summary>
 /// A landblock's objects and indoor cells asked together: a mover sphere (landblock-relative centre) is
-/// blocked when any object or cell blocks it. Each object is skipped by its bounding sphere first, as an
-/// engine's broad phase would; a cell by its tree's root sphere, as retail does.
+/// blocked when any object or cell blocks it. As the client does, the sphere is asked only of what is
+/// registered in the land cells it reaches (<see cref="LandCellPartition"/>: calc_cross_cells for the
+/// objects, find_cell_list for the mover); each object is then skipped by its bounding sphere first, as an
+/// engine's broad phase would, and a cell by its tree's root sphere, as retail does.
+/// <see cref="Exhaustive"/> asks every object and every cell instead: the same answers, bit for bit (the
+/// partition skips only what cannot block), kept as the oracle and the benchmark's baseline.
 /// Landblock-relative, not world, coordinates: float32 world coordinates lose millimetres at landblock
 /// magnitudes, which is why the dat stores frames this way.
 /// </summary>
-internal sealed class SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList<SceneCell>? cells = null) : ISphereOverlap
+internal sealed class SceneQuery : ISphereOverlap
 {
-    private readonly PlacedQuery[] _objects = [.. objects];
-    private readonly SceneCell[] _cells = [.. cells ?? []];
+    private readonly PlacedQuery[] _objects;
+    private readonly SceneCell[] _cells;
+    private readonly CellReach[] _cellReach;
+
+    public SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList<SceneCell>? cells = null)
+    {
+        _objects = [.. objects];
+        _cells = [.. cells ?? []];
+        _cellReach = [.. _cells.Select(c => CellReach.Of(c.Query.Bound))];
+        Partition = LandCellPartition.Build([.. _objects.Select(o => ((Vector3, float)?)o.LandblockBound), .. _cells.Select(c => c.Query.Bound)]);
+        Exhaustive = new ExhaustiveWalk(_objects, _cells);
+    }
 
     public IReadOnlyList<PlacedQuery> Objects => _objects;
 
     public IReadOnlyList<SceneCell> Cells => _cells;
 
+    /// <summary>The land cells the objects (entries 0..n-1) and then the cells (entries n..) are registered in.</summary>
+    public LandCellPartition Partition { get; }
+
+    /// <summary>The same question asked of every object and every cell, in order: the walk the partition must agree with.</summary>
+    public ISphereOverlap Exhaustive { get; }
+
     public bool Overlaps(Vector3 center, float radius)
     {
         if (!SphereBounds.IsValidProbe(center, radius)) return false;
-        foreach (var o in _objects)
-            if (o.Overlaps(center, radius)) return true;
-        foreach (var c in _cells)
-            if (c.Query.Overlaps(center, radius)) return true;
-        return false;
+        var test = new EntryTest(_objects, _cells, _cellReach, center, radius);
+        return Partition.Any(center, radius, ref test);
     }
 
-    /// <summary>The cells whose walls, floors or ceilings a sphere touches.</summary>
+    /// <summary>The cells whose walls, floors or ceilings a sphere touches, in scene order.</summary>
     public IEnumerable<uint> TouchingCells(Vector3 center, float radius) =>
-        _cells.Where(c => c.Query.Overlaps(center, radius)).Select(c => c.CellId);
+        _cells.Where((c, i) => Partition.Reaches(_objects.Length + i, center, radius) && c.Query.Overlaps(center, radius)).Select(c => c.CellId);
+
+    private readonly struct EntryTest(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
+    {
+        public bool Test(int entry)
+        {
+            if (entry < objects.Length) return objects[entry].Overlaps(center, radius);
+            var cell = entry - objects.Length;
+            return cellReach[cell].Reaches(center, radius) && cells[cell].Query.Overlaps(center, radius);
+        }
+
+        public void Visit() { }
+    }
+
+    private sealed class ExhaustiveWalk(PlacedQuery[] objects, SceneCell[] cells) : ISphereOverlap
+    {
+        public bool Overlaps(Vector3 center, float radius)
+        {
+            if (!SphereBounds.IsValidProbe(center, radius)) return false;
+            foreach (var o in objects)
+                if (o.Overlaps(center, radius)) return true;
+            foreach (var c in cells)
+                if (c.Query.Overlaps(center, radius)) return true;
+            return false;
+        }
+    }
 }

@@ -67,9 +67,11 @@ public sealed class HarnessTests
         var ratios = root.GetProperty("ratios").EnumerateArray().ToArray();
         Assert.Equal(report.Ratios.Select(r => r.Name), ratios.Select(r => r.GetProperty("name").GetString()));
         // Five write-workload targets on each of disk and memory, ten others (two the doctor's, one scene against
-        // chart), and compiled against all-retail per mover position, timed and counted, on the scale landblock and the sample.
-        Assert.Equal(24, ratios.Length);
+        // chart), and compiled against all-retail and the partition against the exhaustive walk per mover position, timed
+        // and counted, on the scale landblock and the sample.
+        Assert.Equal(28, ratios.Length);
         Assert.Equal(4, ratios.Count(r => r.GetProperty("name").GetString()!.Contains(": compiled / all-retail, ", StringComparison.Ordinal)));
+        Assert.Equal(4, ratios.Count(r => r.GetProperty("name").GetString()!.Contains(": all-retail partitioned / exhaustive, ", StringComparison.Ordinal)));
         Assert.Contains(ratios, r => r.GetProperty("name").GetString()!.EndsWith("(memory)", StringComparison.Ordinal));
         Assert.All(ratios, r => Assert.True(r.GetProperty("value").GetDouble() > 0, r.ToString()));
         Assert.Contains("| Target | Measured | Goal | Met |", log.ToString());

@@ -110,7 +110,7 @@ public static class BenchHarness
             var sceneTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
             extraRatios.AddRange(sceneTotals.Ratios(BusyLandblock));
             log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"scene {BusyLandblock} per mover position: all-retail {sceneTotals.RetailNs:0.0} ns ({sceneTotals.RetailOps:0.0} counted operations), compiled {sceneTotals.CompiledNs:0.0} ns ({sceneTotals.CompiledOps:0.0})"));
+                $"scene {BusyLandblock} per mover position: all-retail {sceneTotals.RetailNs:0.0} ns ({sceneTotals.RetailOps:0.0} counted operations), compiled {sceneTotals.CompiledNs:0.0} ns ({sceneTotals.CompiledOps:0.0}), exhaustive walk {sceneTotals.ExhaustiveNs:0.0} ns ({sceneTotals.ExhaustiveOps:0.0})"));
             // The same on the built-in sample (one run: what is measured is inside it).
             Reset(landblockOut);
             var sample = ProcessRunner.Run(options.Cli, ["scene", "--landblock", SampleLandblock, "--out", landblockOut, "--quiet", .. probes]);
@@ -119,7 +119,7 @@ public static class BenchHarness
                 var sampleTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
                 extraRatios.AddRange(sampleTotals.Ratios($"{SampleLandblock} (sample)"));
                 log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                    $"scene {SampleLandblock} (sample) per mover position: all-retail {sampleTotals.RetailNs:0.0} ns ({sampleTotals.RetailOps:0.0} counted operations), compiled {sampleTotals.CompiledNs:0.0} ns ({sampleTotals.CompiledOps:0.0})"));
+                    $"scene {SampleLandblock} (sample) per mover position: all-retail {sampleTotals.RetailNs:0.0} ns ({sampleTotals.RetailOps:0.0} counted operations), compiled {sampleTotals.CompiledNs:0.0} ns ({sampleTotals.CompiledOps:0.0}), exhaustive walk {sampleTotals.ExhaustiveNs:0.0} ns ({sampleTotals.ExhaustiveOps:0.0})"));
             }
             else checks.Add(new Check($"scene --landblock {SampleLandblock} on the built-in sample runs", [sample.Stderr.Trim()]));
             Reset(landblockOut);

@@ -1,0 +1,174 @@
+using System.Numerics;
+
+namespace AcShadow.Fixtures.Scenes;
+
+/// <summary>
+/// A scene's outdoor land cells (24 m squares, 8 x 8 per landblock; the grid runs on into the neighbouring
+/// landblocks as far as something registered reaches, as the client's cell lists cross landblock edges), each
+/// listing the entries (a scene's objects, then its indoor cells) whose bound reaches it.
+/// <list type="bullet">
+/// <item>An entry is registered in every land cell its bound's footprint covers: the cells
+/// CPhysicsObj::calc_cross_cells_static puts a static object's shadow in (find_bbox_cell_list over its parts'
+/// box; a CylSphere object, find_cell_list over its spheres).</item>
+/// <item>A mover sphere is asked of the land cells CObjCell::find_cell_list gives it outdoors
+/// (add_all_outside_cells: its own land cell, and each neighbour, diagonals included, whose edge it is within
+/// r of — check_add_cell_boundary).</item>
+/// </list>
+/// Both footprints are padded (<see cref="Pad"/>) beyond the float rounding of the bound tests the entries
+/// make themselves, so a sphere whose exhaustive bound test passes always shares a land cell with the entry:
+/// the partition only skips entries that cannot answer, and answers are the exhaustive walk's, bit for bit.
+/// An entry asked in several of the mover's cells is asked once (in the first cell, y then x, of the overlap).
+/// An entry whose bound is missing, not finite or wider than <see cref="MaxSpan"/> cells is asked everywhere.
+/// </summary>
+internal sealed class LandCellPartition
+{
+    /// <summary>A land cell's side in metres (LandDefs: 8 cells of 24 m per 192 m landblock).</summary>
+    public const double CellSize = 24.0;
+
+    /// <summary>Footprints wider than this many cells are asked at every position instead.</summary>
+    public const int MaxSpan = 16;
+
+    /// <summary>How far from the landblock, in cells, the grid may run; beyond it an entry is asked everywhere.</summary>
+    private const int MaxReach = 64;
+
+    private readonly int _x0, _y0, _width, _height;
+    private readonly int[][] _cells;
+    private readonly int[] _everywhere;
+    private readonly CellRange[] _footprints;
+
+    /// <summary>Land cells x0..x1 by y0..y1, inclusive (cell i spans [24 i, 24 (i + 1)) metres).</summary>
+    public readonly record struct CellRange(int X0, int Y0, int X1, int Y1)
+    {
+        public bool Meets(CellRange other) => X0 <= other.X1 && other.X0 <= X1 && Y0 <= other.Y1 && other.Y0 <= Y1;
+
+        public int Cells => (X1 - X0 + 1) * (Y1 - Y0 + 1);
+    }
+
+    /// <summary>What the partition asks of an entry; a struct, so the walk is compiled per caller without a delegate.</summary>
+    public interface IEntryTest
+    {
+        /// <summary>Asks entry <paramref name="entry"/>; true ends the walk (the entry blocks).</summary>
+        bool Test(int entry);
+
+        /// <summary>Told of each land cell the walk visits (a counted cost may weigh it).</summary>
+        void Visit();
+    }
+
+    public int Entries => _footprints.Length;
+
+    /// <summary>How many entries are asked at every position (no footprint).</summary>
+    public int Everywhere => _everywhere.Length;
+
+    /// <summary>How many land cells hold at least one entry.</summary>
+    public int OccupiedCells => _cells.Count(c => c.Length > 0);
+
+    private LandCellPartition(int x0, int y0, int width, int height, int[][] cells, int[] everywhere, CellRange[] footprints)
+    {
+        (_x0, _y0, _width, _height) = (x0, y0, width, height);
+        _cells = cells;
+        _everywhere = everywhere;
+        _footprints = footprints;
+    }
+
+    /// <summary>
+    /// The partition of entries with these landblock-relative bounds (null: asked everywhere). Entry order is
+    /// kept within every cell's list.
+    /// </summary>
+    public static LandCellPartition Build(IReadOnlyList<(Vector3 Center, float Radius)?> bounds)
+    {
+        var footprints = new CellRange[bounds.Count];
+        var everywhere = new List<int>();
+        int x0 = int.MaxValue, y0 = int.MaxValue, x1 = int.MinValue, y1 = int.MinValue;
+        for (var i = 0; i < bounds.Count; i++)
+        {
+            if (bounds[i] is not { } b || Footprint(b.Center, b.Radius) is not { } f)
+            {
+                footprints[i] = new CellRange(0, 0, -1, -1);
+                everywhere.Add(i);
+                continue;
+            }
+            footprints[i] = f;
+            (x0, y0, x1, y1) = (Math.Min(x0, f.X0), Math.Min(y0, f.Y0), Math.Max(x1, f.X1), Math.Max(y1, f.Y1));
+        }
+        if (x0 > x1) return new LandCellPartition(0, 0, 0, 0, [], [.. everywhere], footprints);
+        int width = x1 - x0 + 1, height = y1 - y0 + 1;
+        var lists = new List<int>[width * height];
+        for (var i = 0; i < footprints.Length; i++)
+        {
+            var f = footprints[i];
+            if (f.X0 > f.X1) continue;
+            for (var y = f.Y0; y <= f.Y1; y++)
+                for (var x = f.X0; x <= f.X1; x++)
+                    (lists[(y - y0) * width + (x - x0)] ??= []).Add(i);
+        }
+        return new LandCellPartition(x0, y0, width, height, [.. lists.Select(l => l is null ? [] : l.ToArray())], [.. everywhere], footprints);
+    }
+
+    /// <summary>
+    /// Asks <paramref name="test"/> each entry the sphere's land cells hold (entries asked everywhere first),
+    /// each once; true as soon as one answers true.
+    /// </summary>
+    public bool Any<T>(Vector3 center, float radius, ref T test) where T : struct, IEntryTest
+    {
+        foreach (var e in _everywhere)
+            if (test.Test(e)) return true;
+        if (!Reach(center, radius, out var q)) return false;
+        for (var y = q.Y0; y <= q.Y1; y++)
+            for (var x = q.X0; x <= q.X1; x++)
+            {
+                test.Visit();
+                foreach (var e in _cells[(y - _y0) * _width + (x - _x0)])
+                {
+                    ref readonly var f = ref _footprints[e];
+                    // Asked in the first cell both ranges share, so once however many cells it covers.
+                    if (x != Math.Max(f.X0, q.X0) || y != Math.Max(f.Y0, q.Y0)) continue;
+                    if (test.Test(e)) return true;
+                }
+            }
+        return false;
+    }
+
+    /// <summary>Can the sphere reach entry <paramref name="entry"/>: is it asked everywhere, or does its footprint meet the sphere's?</summary>
+    public bool Reaches(int entry, Vector3 center, float radius)
+    {
+        var f = _footprints[entry];
+        if (f.X0 > f.X1) return true;
+        return Reach(center, radius, out var q) && f.Meets(q);
+    }
+
+    /// <summary>The land cells of the grid a mover sphere is asked in (false: none, the sphere is beyond every footprint).</summary>
+    public bool Reach(Vector3 center, float radius, out CellRange cells)
+    {
+        cells = default;
+        if (_width == 0 || !float.IsFinite(center.X) || !float.IsFinite(center.Y) || !float.IsFinite(radius) || radius < 0f) return false;
+        var pad = Pad(radius);
+        double fx0 = Math.Floor((center.X - pad) / CellSize), fx1 = Math.Floor((center.X + pad) / CellSize);
+        double fy0 = Math.Floor((center.Y - pad) / CellSize), fy1 = Math.Floor((center.Y + pad) / CellSize);
+        int gx1 = _x0 + _width - 1, gy1 = _y0 + _height - 1;
+        if (fx1 < _x0 || fx0 > gx1 || fy1 < _y0 || fy0 > gy1) return false;
+        cells = new CellRange((int)Math.Max(fx0, _x0), (int)Math.Max(fy0, _y0), (int)Math.Min(fx1, gx1), (int)Math.Min(fy1, gy1));
+        return true;
+    }
+
+    /// <summary>
+    /// The land cells a landblock-relative bound covers, padded; null when it is not finite, wider than
+    /// <see cref="MaxSpan"/> cells or beyond <see cref="MaxReach"/> cells of the landblock.
+    /// </summary>
+    public static CellRange? Footprint(Vector3 center, float radius)
+    {
+        if (!float.IsFinite(center.X) || !float.IsFinite(center.Y) || !float.IsFinite(center.Z) || !float.IsFinite(radius) || radius < 0f) return null;
+        var pad = Pad(radius);
+        double x0 = Math.Floor((center.X - pad) / CellSize), x1 = Math.Floor((center.X + pad) / CellSize);
+        double y0 = Math.Floor((center.Y - pad) / CellSize), y1 = Math.Floor((center.Y + pad) / CellSize);
+        if (x1 - x0 >= MaxSpan || y1 - y0 >= MaxSpan) return null;
+        if (x0 < -MaxReach || y0 < -MaxReach || x1 > 8 + MaxReach || y1 > 8 + MaxReach) return null;
+        return new CellRange((int)x0, (int)y0, (int)x1, (int)y1);
+    }
+
+    /// <summary>
+    /// A radius widened past every rounding the bound tests can make (float squares and sums: relative 1e-6;
+    /// a BSP root's ε of 0.0002 on squared distances: under 0.015 m; an unnormalised cell rotation: under 1e-3
+    /// of the distance) — 0.05 m and 1e-3 of the radius. Too wide only costs a cell; too narrow would drop an answer.
+    /// </summary>
+    private static double Pad(float radius) => radius * 1.001 + 0.05;
+}

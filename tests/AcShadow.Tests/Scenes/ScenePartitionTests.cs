@@ -1,0 +1,193 @@
+using System.Numerics;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Compile;
+using AcShadow.Core.Batch;
+using AcShadow.Fixtures;
+using AcShadow.Fixtures.Collision;
+using AcShadow.Fixtures.Scenes;
+using AcShadow.Tests.Chart;
+using AcShadow.Tests.Forge;
+using AcShadow.Tests.Support;
+
+namespace AcShadow.Tests.Scenes;
+
+/// <summary>
+/// The land-cell partition (objects registered in the 24 m land cells their bound covers, as
+/// calc_cross_cells_static registers a shadow; a mover sphere asked of the land cells find_cell_list gives it)
+/// answers exactly as the exhaustive walk over every object and every cell: at every position the scene is
+/// checked at, on the built-in sample and on landblock 0x0000 of a dat `forge scale` wrote, all-retail and
+/// compiled, and at spheres placed on land-cell edges and tangent to every bound. Indoor cells are registered
+/// by their tree's root sphere in the land cells beneath it, a superset of what the client reaches through
+/// building portals: no answer the exhaustive walk gives is dropped, so no retail rule had to overrule it.
+/// </summary>
+public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture<SmallScaleFixture>
+{
+    [Fact]
+    public void The_partition_answers_as_the_exhaustive_walk_on_every_probe_of_the_sample_landblock()
+    {
+        var report = SceneCompileTests.Exact.Value;
+        var (probes, edges) = AssertSameAnswers(report);
+        Assert.Equal(report.Totals.Positions, probes);
+        Assert.True(edges > 1_000, $"{edges} edge positions");
+        // Every object and cell has a footprint, and the partition asks less than the exhaustive walk, counted.
+        var retail = SceneCompiler.Query(report, c => c.Retail);
+        Assert.Equal(0, retail.Partition.Everywhere);
+        Assert.True(report.Totals.RetailOps < report.Totals.ExhaustiveOps, $"{report.Totals.RetailOps} vs {report.Totals.ExhaustiveOps}");
+    }
+
+    [Fact]
+    public void The_partition_answers_as_the_exhaustive_walk_on_every_probe_of_a_forged_scale_landblock()
+    {
+        Assert.True(LandblockIds.TryParse("0x0000", out var landblock));
+        var scene = BatchPlanner.Plan(new BatchSelection(false, false, null, landblock), scale.Files.Portal, scale.Files.Cell, []).Scene!;
+        var subjects = new ChartSubjects(scale.Files.Portal);
+        // A 1 m grid keeps the compile to seconds; the stability probes still sit on every polygon and plane.
+        var options = new SceneCompileOptions { Chart = new ChartOptions { Spacing = 1f } };
+        var report = SceneCompiler.Compile(scene, subjects, options, new FixedTimer());
+        Assert.True(report.Placed.Count >= 20, $"{report.Placed.Count} placed objects");
+        var (probes, edges) = AssertSameAnswers(report);
+        Assert.Equal(report.Totals.Positions, probes);
+        Assert.True(probes > 10_000, $"{probes} positions");
+        Assert.True(edges > 1_000, $"{edges} edge positions");
+        // Counted along the walks: the partition asks less than the exhaustive walk.
+        Assert.True(report.Totals.RetailOps < report.Totals.ExhaustiveOps, $"{report.Totals.RetailOps} vs {report.Totals.ExhaustiveOps}");
+    }
+
+    [Fact]
+    public void The_loaded_compiled_scene_asks_through_the_partition_and_answers_as_its_exhaustive_walk()
+    {
+        using var dir = new TempDir();
+        var report = SceneCompileTests.Exact.Value;
+        foreach (var f in CompiledSceneFiles.Render(report, id => AcShadow.Core.Bsp.BspExtractor.Extract(SampleChart.Subjects.Value.GfxObj(id)!)))
+        {
+            var path = Path.Combine(dir.Path, f.RelativePath);
+            Directory.CreateDirectory(Path.GetDirectoryName(path)!);
+            File.WriteAllBytes(path, f.Content.Span);
+        }
+        var loaded = CompiledScene.Load(dir.Path);
+        var positions = Positions(report).Concat(EdgePositions(loaded.Query)).ToArray();
+        foreach (var (at, r) in positions)
+            Assert.True(loaded.Overlaps(at, r) == loaded.Query.Exhaustive.Overlaps(at, r), $"{at} r {r}");
+        Assert.Contains(positions, p => loaded.Overlaps(p.At, p.Radius));
+        Assert.Contains(positions, p => !loaded.Overlaps(p.At, p.Radius));
+    }
+
+    [Fact]
+    public void A_sphere_on_a_land_cell_edge_is_asked_in_every_cell_it_touches_and_an_entry_once()
+    {
+        // One bound straddling the edge x = 24 and one wholly in cell (2, 0).
+        var partition = LandCellPartition.Build([(new Vector3(24f, 10f, 0f), 1f), (new Vector3(60f, 10f, 0f), 2f)]);
+        // 0.5 m from the edge: a 0.6 m sphere reaches over it, a 0.25 m one does not.
+        Assert.True(partition.Reach(new Vector3(23.5f, 10f, 0f), 0.6f, out var near));
+        Assert.Equal(new LandCellPartition.CellRange(0, 0, 1, 0), near);
+        Assert.True(partition.Reach(new Vector3(23.5f, 10f, 0f), 0.25f, out var inside));
+        Assert.Equal(new LandCellPartition.CellRange(0, 0, 0, 0), inside);
+        var asked = new Asked();
+        Assert.False(partition.Any(new Vector3(24f, 10f, 0f), 0.5f, ref asked));
+        Assert.Equal(new[] { 0 }, asked.Entries);
+        Assert.Equal(2, asked.Visits);
+        // A sphere just inside cell 1, within r of the edge at 48, is asked in cell 2 as well: the first entry is
+        // registered in cell 1 (where its bound reaches), the second in cell 2.
+        asked = new Asked();
+        partition.Any(new Vector3(47.9f, 10f, 0f), 0.5f, ref asked);
+        Assert.Equal(new[] { 0, 1 }, asked.Entries);
+        Assert.Equal(2, asked.Visits);
+        // Well inside cell 2, away from its edges, only cell 2 is visited.
+        asked = new Asked();
+        partition.Any(new Vector3(60f, 12f, 0f), 0.5f, ref asked);
+        Assert.Equal(new[] { 1 }, asked.Entries);
+        Assert.Equal(1, asked.Visits);
+        // A bound with no finite centre is asked everywhere, first.
+        var odd = LandCellPartition.Build([(new Vector3(float.NaN, 0f, 0f), 1f), null, (new Vector3(5f, 5f, 0f), 1f)]);
+        Assert.Equal(2, odd.Everywhere);
+        asked = new Asked();
+        odd.Any(new Vector3(500f, 500f, 0f), 1f, ref asked);
+        Assert.Equal(new[] { 0, 1 }, asked.Entries);
+    }
+
+    private struct Asked() : LandCellPartition.IEntryTest
+    {
+        public List<int> Entries { get; } = [];
+        public int Visits { get; private set; }
+
+        public readonly bool Test(int entry)
+        {
+            Entries.Add(entry);
+            return false;
+        }
+
+        public void Visit() => Visits++;
+    }
+
+    /// <summary>
+    /// Every scene position (what Totals asks) and every edge position: the partitioned answer and the touched
+    /// cells equal the exhaustive walk's, all-retail and compiled. Returns how many of each were checked.
+    /// </summary>
+    private static (int Probes, int Edges) AssertSameAnswers(CompiledSceneReport report)
+    {
+        var probes = Positions(report).ToArray();
+        var edges = 0;
+        foreach (var pick in new Func<ObjectCompilation, AcShadow.Analysis.Chart.Models.PreparedModel?>[] { c => c.Retail, c => c.Chosen })
+        {
+            var query = SceneCompiler.Query(report, pick);
+            var edgeProbes = EdgePositions(query).ToArray();
+            edges = edgeProbes.Length;
+            int blocked = 0;
+            foreach (var (at, r) in probes.Concat(edgeProbes))
+            {
+                var expected = query.Exhaustive.Overlaps(at, r);
+                Assert.True(expected == query.Overlaps(at, r), $"{at} r {r}: exhaustive {expected}");
+                if (expected) blocked++;
+                var cells = query.Cells.Where(c => c.Query.Overlaps(at, r)).Select(c => c.CellId);
+                Assert.Equal(cells, query.TouchingCells(at, r));
+            }
+            Assert.InRange(blocked, 1, probes.Length + edgeProbes.Length - 1);
+        }
+        return (probes.Length, edges);
+    }
+
+    /// <summary>Every object's and every cell's probes moved into the landblock, as the scene's totals ask them.</summary>
+    private static IEnumerable<(Vector3 At, float Radius)> Positions(CompiledSceneReport report)
+    {
+        foreach (var placed in report.Placed)
+        {
+            if (report.For(placed.Object) is not { } c) continue;
+            var frame = new PartPose(placed.Object.Frame.Position, Quaternion.Normalize(placed.Object.Frame.Rotation), 1f);
+            foreach (var p in c.Probes) yield return (frame.ToEntity(p.Center), p.Radius);
+        }
+        foreach (var cell in report.Cells)
+            foreach (var p in cell.Probes) yield return (cell.Frame.ToEntity(p.Center), p.Radius);
+    }
+
+    /// <summary>
+    /// Spheres where a partition could lose an answer: tangent to each entry's bound (16 directions in the
+    /// plane, and above and below), and every metre along every land-cell edge line the bound crosses or nears, at
+    /// offsets of 0, ±r/2, ±r and ±(r + 1 mm) from the edge — for radii 0.25, 0.5 and 1.5 m.
+    /// </summary>
+    private static IEnumerable<(Vector3 At, float Radius)> EdgePositions(SceneQuery query)
+    {
+        var bounds = query.Objects.Select(o => o.LandblockBound).Concat(query.Cells.Select(c => c.Query.Bound).OfType<(Vector3 Center, float Radius)>());
+        foreach (var (center, radius) in bounds)
+            foreach (var r in new[] { 0.25f, 0.5f, 1.5f })
+            {
+                var reach = radius + r;
+                for (var k = 0; k < 16; k++)
+                {
+                    var angle = k * MathF.PI / 8f;
+                    yield return (center + reach * new Vector3(MathF.Cos(angle), MathF.Sin(angle), 0f), r);
+                }
+                yield return (center + new Vector3(0f, 0f, reach), r);
+                yield return (center - new Vector3(0f, 0f, reach), r);
+                var lo = (int)MathF.Floor((center.X - reach) / 24f);
+                var hi = (int)MathF.Floor((center.X + reach) / 24f) + 1;
+                var loY = (int)MathF.Floor((center.Y - reach) / 24f);
+                var hiY = (int)MathF.Floor((center.Y + reach) / 24f) + 1;
+                foreach (var offset in new[] { 0f, r / 2, -r / 2, r, -r, r + 1e-3f, -r - 1e-3f })
+                    for (var t = -reach; t <= reach; t += 1f)
+                    {
+                        for (var line = lo; line <= hi; line++) yield return (new Vector3(line * 24f + offset, center.Y + t, center.Z), r);
+                        for (var line = loY; line <= hiY; line++) yield return (new Vector3(center.X + t, line * 24f + offset, center.Z), r);
+                    }
+            }
+    }
+}
