@@ -421,69 +421,15 @@ public static class SampleSpecAuthor
                 Parts = 1,
                 Frames = [[At(0.3, 0, 0)], [At(0.6, 0, 0)]],
             },
-            new AnimationSpec
-            {
-                Id = Hex(CycleFirstAnim),
-                Comment = "first of three: the column 0.1 m along x, then 0.2 m",
-                Parts = 1,
-                Frames = [[At(0.1, 0, 0)], [At(0.2, 0, 0)]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(CycleSecondAnim),
-                Comment = "second of three: the column 0.1 m along y, then 0.2 m",
-                Parts = 1,
-                Frames = [[At(0, 0.1, 0)], [At(0, 0.2, 0)]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(CycleLastAnim),
-                Comment = "last of three: the column 0.1, 0.2, then 0.3 m up, the last frame also turned 90 deg about Z",
-                Parts = 1,
-                Frames = [[At(0, 0, 0.1)], [At(0, 0, 0.2)], [At(0, 0, 0.3, Z(90))]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(StyleDoorCombatAnim),
-                Comment = "the style door in HandCombat Ready: lifted 0.4 m",
-                Parts = 1,
-                Frames = [[At(0, 0, 0.4)]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(StyleDoorClosedAnim),
-                Comment = "the style door closed (NonCombat Off): 2 cm along x",
-                Parts = 1,
-                Frames = [[At(0.02, 0, 0)]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(StyleDoorOpenAnim),
-                Comment = "the style door open (NonCombat On): turned 90 deg about Z, 0.5 m along -y",
-                Parts = 1,
-                Frames = [[At(0, -0.5, 0, Z(90))]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(StyleDoorCombatOffAnim),
-                Comment = "HandCombat Off, and the link from HandCombat Ready to NonCombat: sunk 1 m",
-                Parts = 1,
-                Frames = [[At(0, 0, -1)]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(AbsentCaseFirstAnim),
-                Comment = "first of the cycle with an absent animation: the column 0.5 m along x",
-                Parts = 1,
-                Frames = [[At(0.5, 0, 0)]],
-            },
-            new AnimationSpec
-            {
-                Id = Hex(AbsentCaseSecondAnim),
-                Comment = "second of the cycle with an absent animation (played from frame 1): the column 0.5, then 0.7 m along y",
-                Parts = 1,
-                Frames = [[At(0, 0.5, 0)], [At(0, 0.7, 0)]],
-            },
+            OnePartAnimation(CycleFirstAnim, "first of three: the column 0.1 m along x, then 0.2 m", At(0.1, 0, 0), At(0.2, 0, 0)),
+            OnePartAnimation(CycleSecondAnim, "second of three: the column 0.1 m along y, then 0.2 m", At(0, 0.1, 0), At(0, 0.2, 0)),
+            OnePartAnimation(CycleLastAnim, "last of three: the column 0.1, 0.2, then 0.3 m up, the last frame also turned 90 deg about Z", At(0, 0, 0.1), At(0, 0, 0.2), At(0, 0, 0.3, Z(90))),
+            OnePartAnimation(StyleDoorCombatAnim, "the style door in HandCombat Ready: lifted 0.4 m", At(0, 0, 0.4)),
+            OnePartAnimation(StyleDoorClosedAnim, "the style door closed (NonCombat Off): 2 cm along x", At(0.02, 0, 0)),
+            OnePartAnimation(StyleDoorOpenAnim, "the style door open (NonCombat On): turned 90 deg about Z, 0.5 m along -y", At(0, -0.5, 0, Z(90))),
+            OnePartAnimation(StyleDoorCombatOffAnim, "HandCombat Off, and the link from HandCombat Ready to NonCombat: sunk 1 m", At(0, 0, -1)),
+            OnePartAnimation(AbsentCaseFirstAnim, "first of the cycle with an absent animation: the column 0.5 m along x", At(0.5, 0, 0)),
+            OnePartAnimation(AbsentCaseSecondAnim, "second of the cycle with an absent animation (played from frame 1): the column 0.5, then 0.7 m along y", At(0, 0.5, 0), At(0, 0.7, 0)),
             new AnimationSpec
             {
                 Id = Hex(ShortAnimationAnim),
@@ -596,6 +542,15 @@ public static class SampleSpecAuthor
     }
 
     private static string Hex(uint id) => $"0x{id:X8}";
+
+    /// <summary>An animation of one part, one frame per frame given.</summary>
+    private static AnimationSpec OnePartAnimation(uint id, string comment, params FrameSpec[] frames) => new()
+    {
+        Id = Hex(id),
+        Comment = comment,
+        Parts = 1,
+        Frames = frames.Select(f => (IReadOnlyList<FrameSpec>?)[f]).ToArray(),
+    };
 
     /// <summary>The octagonal column alone, Resting at the origin: the animated one-part Setups.</summary>
     private static SetupSpec ColumnSetup(uint id, string comment) => new()
