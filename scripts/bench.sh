@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Runs the benchmark harness (tools/AcShadow.Bench, `harness`): forges the scale dat and its quarter-size
-# twin (cached in .bench-cache/ by their parameters), measures the floor, the naive exporter, batch at one
-# job and at all cores, --incremental, doctor, dump against --version, a landblock batch with and without its
-# indoor cells and the collision reference, writes
-# bench.json and prints the table. Extra arguments go to the harness: --small (CI size), --setups N,
+# Runs the benchmark harness (tools/AcShadow.Bench, `harness`): forges the scale dat, its quarter-size twin and
+# the 3,000-Setup scaling dat (cached in .bench-cache/ by their parameters), measures the floor, batch at one
+# job and at all cores, --incremental, doctor, dump against --version (the published binary, and the tool as
+# `dotnet tool install` puts it on the PATH: packed by scripts/pack-tool.sh, installed into artifacts/bench/tool),
+# scene and chart of the busy landblock, a landblock batch with and without its indoor cells and the collision
+# reference, writes bench.json and prints the table with the run's conditions (cores, load average at the start
+# and the end). Extra arguments go to the harness: --small (CI size), --setups N,
 # --gfxobjs M, --seed S, --reps R, --out FILE, --work DIR (the disk folder the write workloads use),
 # --memory-work DIR|none (their second, memory-backed run; default /dev/shm when present).
 #
@@ -26,7 +28,16 @@ else
     echo "bench: ahead-of-time publishes unavailable; measuring the plain Release build"
     dotnet publish src/AcShadow.Cli -c Release -o "$cli_dir" -v quiet -nologo
 fi
+
+# The tool as users install it (README: Install): packed into a feed and installed into a folder of its own,
+# from a package cache of its own so no earlier package of the same version stands in for this one.
+feed="$root/artifacts/bench/feed" tool_dir="$root/artifacts/bench/tool" packages="$root/artifacts/bench/packages"
+rm -rf "$feed" "$tool_dir" "$packages"
+scripts/pack-tool.sh "$feed"
+NUGET_PACKAGES="$packages" dotnet tool install acshadow --tool-path "$tool_dir" --add-source "$feed" >/dev/null
+echo "bench: dotnet tool install put $(file -b "$(readlink -f "$tool_dir/acshadow")" | cut -d, -f1-2) on the PATH ($tool_dir/acshadow)"
+
 dotnet build tools/AcShadow.Bench -c Release -v quiet -nologo
 
 exec dotnet tools/AcShadow.Bench/bin/Release/net10.0/AcShadow.Bench.dll harness \
-    --cli "$cli_dir/acshadow" --cache "$root/.bench-cache" --out "$root/bench.json" "$@"
+    --cli "$cli_dir/acshadow" --installed "$tool_dir/acshadow" --cache "$root/.bench-cache" --out "$root/bench.json" "$@"

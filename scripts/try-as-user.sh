@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Uses acshadow the way a collision project outside this repository would, and fails if any step does:
-#   1. packs the AcShadow.Fixtures library and the acshadow .NET tool into a local folder (the "feed");
+#   1. packs the AcShadow.Fixtures library and the acshadow .NET tool into a local folder (the "feed"), the tool
+#      with scripts/pack-tool.sh: the RID-specific Native AOT package and the framework-dependent fallback;
 #   2. installs the tool with the README's command (dotnet tool install --global --add-source FEED acshadow)
-#      into a throwaway DOTNET_CLI_HOME, and from then on runs it from a fresh shell (env -i) by name;
+#      into a throwaway DOTNET_CLI_HOME, checks that what it put on the PATH is the native binary, and from
+#      then on runs it from a fresh shell (env -i) by name; also installs the framework-dependent fallback (from a
+#      feed whose acshadow package names only `any`, as a platform with no package of its own gets it) and runs it;
 #   3. generates fixtures with the installed tool and verifies them;
 #   4. creates a new xunit project in a temp folder OUTSIDE the repository, adds the AcShadow.Fixtures
 #      package from the feed with `dotnet add package`, copies in the sample consumer test
@@ -28,12 +31,20 @@ user() { printf '$ %s\n' "$*"; env -i HOME="$HOME" DOTNET_CLI_HOME="$home" DOTNE
 
 step "pack the library and the tool into $feed"
 dotnet pack "$repo/src/AcShadow.Fixtures" -c Release -o "$feed" --nologo -v quiet -clp:ErrorsOnly
-dotnet pack "$repo/src/AcShadow.Cli" -c Release -o "$feed" --nologo -v quiet -clp:ErrorsOnly
-ls "$feed"
+"$repo/scripts/pack-tool.sh" "$feed"
 
 step "install the tool as the README says"
 user "dotnet tool install --global --add-source '$feed' acshadow"
 user "acshadow --version"
+# On the machine that packed it, the command on the PATH is the Native AOT binary itself: no runtime starts.
+user "acshadow --version | grep -F '(Native AOT)' && file -L \$(command -v acshadow) | grep -F ELF"
+
+step "the framework-dependent fallback, as a platform with no package of its own gets it"
+# A feed whose acshadow package names only `any`: what a machine the packages were not built for installs.
+mkdir -p "$work/feed-any" && cp "$feed"/acshadow.any.*.nupkg "$work/feed-any/"
+dotnet pack "$repo/src/AcShadow.Cli" -c Release -o "$work/feed-any" -p:ToolPackageRuntimeIdentifiers=any --nologo -v quiet -clp:ErrorsOnly
+user "dotnet tool install --tool-path '$work/fallback' --add-source '$work/feed-any' acshadow >/dev/null && '$work/fallback/acshadow' --version | grep -F 'runtime: .NET' | grep -vF 'Native AOT'"
+user "'$work/fallback/acshadow' dump --setup 0x020019FF --out '$work/fallback-dump' 2>/dev/null; ls '$work/fallback-dump'"
 
 step "generate fixtures with the installed tool (built-in sample: no dat needed)"
 mkdir -p "$project"

@@ -171,15 +171,15 @@ internal static class SceneCompiler
     {
         var retail = Query(placed, compiled, cells, c => c.Retail);
         var chosen = Query(placed, compiled, cells, c => c.Chosen);
-        var positions = new List<Probe>();
+        var segments = new List<(Probe[], PartPose)>();
         foreach (var p in placed)
         {
             if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;
-            var frame = new PartPose(p.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(p.Object.Frame.Rotation), 1f);
-            foreach (var probe in c.Probes) positions.Add(probe with { Center = frame.ToEntity(probe.Center) });
+            segments.Add((c.Probes, new PartPose(p.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(p.Object.Frame.Rotation), 1f)));
         }
-        foreach (var cell in cells)
-            foreach (var probe in cell.Probes) positions.Add(probe with { Center = cell.Frame.ToEntity(probe.Center) });
+        foreach (var cell in cells) segments.Add((cell.Probes, cell.Frame));
+        // Moved into the landblock as they are read: held, they were most of the compile's peak memory.
+        var positions = new ScenePositions(segments);
         int agree = 0, falsePass = 0, falseBlock = 0;
         foreach (var p in positions)
         {

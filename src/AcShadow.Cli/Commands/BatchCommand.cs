@@ -80,7 +80,10 @@ public static class BatchCommand
         PoseOptions.RequireUsable(options, dat.Portal, plan.Setups.Select(s => s.Id).ToArray());
         var movement = MoveCommand.Selection(movementIds, moverId, dat);
         using var folder = OutputFolder.Open(outDir, dat);
-        var inputs = new BatchInputs(OpenedDat.Hashed(dat.Portal), selection.Landblock is null || dat.Cell is null ? null : OpenedDat.Hashed(dat.Cell), options.Policy, options.EntityScale, selection)
+        // The portal dat's SHA-256 (index.json records it) reads the whole file once more: with a second job it is
+        // read beside the export, not before it, where it was the largest part of the run no second core shortens.
+        var portalHash = jobs > 1 ? Task.Run(() => OpenedDat.Hashed(dat.Portal)) : Task.FromResult(OpenedDat.Hashed(dat.Portal));
+        var inputs = new BatchInputs(dat.Portal.Info, selection.Landblock is null || dat.Cell is null ? null : OpenedDat.Hashed(dat.Cell), options.Policy, options.EntityScale, selection)
         {
             Formats = formats,
             Pose = options.Pose,
@@ -122,6 +125,7 @@ public static class BatchCommand
                 progress.Report(p);
                 dat.RequireUnchanged();
             }, console.Interrupted);
+            result = result with { Inputs = result.Inputs with { Dat = portalHash.GetAwaiter().GetResult() } };
             dat.RequireUnchanged();
         }
         catch (OperationCanceledException) when (console.Interrupted.IsCancellationRequested)
@@ -187,6 +191,8 @@ public static class BatchCommand
     private static IReadOnlySet<string> RefuseForeignFiles(OutputFolder folder, BatchPlan plan, OutputFormats formats)
     {
         var outDir = folder.Root;
+        // A folder that was empty holds nothing to refuse (and no index): on a first run that is every planned path's two stats saved.
+        if (folder.StartedEmpty) return new HashSet<string>(StringComparer.Ordinal);
         var listed = IndexListing.Read(outDir);
         var candidates = new List<OutputFile>();
         var considered = new List<string>();

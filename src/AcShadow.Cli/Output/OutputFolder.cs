@@ -18,14 +18,21 @@ public sealed class OutputFolder : IDisposable
     private readonly OutputFolderLock _lock;
     private readonly OpenedDat? _reads;
 
-    private OutputFolder(string root, OutputFolderLock held, OpenedDat? reads)
+    private OutputFolder(string root, OutputFolderLock held, OpenedDat? reads, bool startedEmpty)
     {
         Root = root;
         _lock = held;
         _reads = reads;
+        StartedEmpty = startedEmpty;
     }
 
     public string Root { get; }
+
+    /// <summary>
+    /// The folder was missing or empty when this run opened it (it holds the run's lock now): no file in it can
+    /// be foreign or a dat, so the checks of every path a run will write can be skipped.
+    /// </summary>
+    public bool StartedEmpty { get; }
 
     /// <summary>Before the dat is read: an empty path, or a file where the folder belongs, fails in a second rather than after the work.</summary>
     public static void Check(string root)
@@ -43,6 +50,7 @@ public sealed class OutputFolder : IDisposable
     /// </summary>
     public static OutputFolder Open(string root, OpenedDat? reads = null)
     {
+        var startedEmpty = FileKinds.Of(root) == FileKind.Missing || (FileKinds.Of(root) == FileKind.Folder && !Directory.EnumerateFileSystemEntries(root).Any());
         WriteProbe.Prepare(root, Option);
         var held = OutputFolderLock.Acquire(root, Option);
         try
@@ -55,7 +63,7 @@ public sealed class OutputFolder : IDisposable
             throw;
         }
         AbandonedTemporaries.Remove(root);
-        return new OutputFolder(root, held, reads);
+        return new OutputFolder(root, held, reads, startedEmpty);
     }
 
     /// <summary>

@@ -5,11 +5,12 @@ using System.Globalization;
 namespace AcShadow.Bench.Harness;
 
 /// <summary>
-/// One harness run: forge (or reuse) the scale dat and its quarter-size twin, then measure side by side,
-/// each warmed once and repeated: the floor, the naive exporter, `batch --all` at one job and at all
-/// cores, `--incremental` with nothing to do, `doctor`, `dump` against `--version`, the busiest landblock's scene with
-/// and without its indoor cells, `scene` against `chart` on a landblock of 60 objects, and the collision reference
-/// against brute force; check the outputs are byte-identical; write bench.json and print the table.
+/// One harness run: forge (or reuse) the scale dat, its quarter-size twin and the 3,000-Setup scaling dat, then
+/// measure side by side, each warmed once and repeated: the floor, `batch --all` at one job and at all cores
+/// (on all three dats), `--incremental` with nothing to do, `doctor`, `dump` against `--version` (the published
+/// binary, and what `dotnet tool install` put on the PATH), the busiest landblock's scene with and without its
+/// indoor cells, `scene` against `chart` on the scale dat's busy landblock (with the scene's peak memory), and the
+/// collision reference against brute force; check the outputs are byte-identical; write bench.json and print the table.
 /// </summary>
 public static class BenchHarness
 {
@@ -30,15 +31,36 @@ public static class BenchHarness
         var full = ScaleDatCache.Get(options.CacheDirectory, options.Setups, options.GfxObjs, options.Seed, log);
         var quarter = ScaleDatCache.Get(options.CacheDirectory, Math.Max(1, options.Setups / 4),
             Math.Max(AcShadow.Forge.Scale.ScaleSpecGenerator.MinGfxObjs(Math.Max(1, options.Setups / 4)), options.GfxObjs / 4), options.Seed, log);
+        var scaling = options.Small
+            ? ScaleDatCache.Get(options.CacheDirectory, HarnessOptions.SmallScalingSetups, AcShadow.Forge.Scale.ScaleSpecGenerator.GfxObjsFor(HarnessOptions.SmallScalingSetups), HarnessOptions.ScalingSeed, log)
+            : ScaleDatCache.Get(options.CacheDirectory, HarnessOptions.ScalingSetups, HarnessOptions.ScalingGfxObjs, HarnessOptions.ScalingSeed, log);
 
         var timings = new List<Timing>();
         var checks = new List<Check>();
         var extraRatios = new List<Ratio>();
         try
         {
+            var jobCounts = cores > 1 ? new[] { 1, cores } : [1];
+            // batch --all at every job count into empty folders of the place, and the check that their outputs are the same bytes.
+            Dictionary<int, string> Batches(string size, string dat, CachedDat forged, string output, RunFolders place)
+            {
+                var outputs = new Dictionary<int, string>();
+                foreach (var jobs in jobCounts)
+                    timings.Add(Measure(log, options, "batch", size, jobs, output, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder ({forged.Setups} Setups)",
+                        run => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", forged.Directory, "--out", outputs[jobs] = place.Empty($"batch-{size}-j{jobs}", run), "--jobs", Text(jobs), "--quiet"])));
+                if (cores > 1)
+                    checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({dat}, {output})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
+                return outputs;
+            }
+            // How far a second job carries batch on a dat of 3,000 Setups (issue 30): batch alone, both places.
+            foreach (var (output, root) in OutputPlaces(options))
+            {
+                var place = new RunFolders(root, output == "disk");
+                Batches(BenchReport.ScalingSize, $"{scaling.Setups}-Setup dat", scaling, output, place);
+                if (output != "disk") place.Clear();
+            }
             foreach (var (size, dat) in new[] { ("quarter", quarter), ("full", full) })
             {
-                var jobCounts = cores > 1 ? new[] { 1, cores } : [1];
                 foreach (var jobs in jobCounts)
                     timings.Add(Measure(log, options, "floor", size, jobs, "none", "read and decode every Setup and the GfxObjs its parts name, discard (bench process)",
                         _ => ProcessRunner.Run(BenchExecutable, ["floor", "--dat", dat.Directory, "--jobs", Text(jobs)])));
@@ -47,16 +69,7 @@ public static class BenchHarness
                 foreach (var (output, root) in OutputPlaces(options))
                 {
                     var place = new RunFolders(root, output == "disk");
-                    var naiveOut = Path.Combine(root, $"naive-{size}");
-                    timings.Add(Measure(log, options, "naive", size, 1, output, "System.Text.Json reflection defaults, one file per Setup and per BSP GfxObj (bench process)",
-                        run => ProcessRunner.Run(BenchExecutable, ["naive", "--dat", dat.Directory, "--out", place.Empty($"naive-{size}", run)])));
-
-                    var outputs = new Dictionary<int, string>();
-                    foreach (var jobs in jobCounts)
-                        timings.Add(Measure(log, options, "batch", size, jobs, output, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder",
-                            run => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", dat.Directory, "--out", outputs[jobs] = place.Empty($"batch-{size}-j{jobs}", run), "--jobs", Text(jobs), "--quiet"])));
-                    if (cores > 1)
-                        checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({size}, {output})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
+                    var outputs = Batches(size, size, dat, output, place);
                     if (output == "disk")
                     {
                         // The everyday re-run into the folder the last run wrote; with the same dat every file already holds its bytes.
@@ -97,6 +110,15 @@ public static class BenchHarness
             timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
                 _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut]); }));
             Reset(dumpOut);
+            // The same start-up as users meet it: the command `dotnet tool install` put on the PATH.
+            if (options.InstalledCli is { } installed)
+            {
+                timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledVersion, "full", 1, "none", $"{installed} --version, whole process",
+                    _ => ProcessRunner.Run(installed, ["--version"])));
+                timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledDump, "full", 1, "disk", $"{installed} dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
+                    _ => ProcessRunner.Run(installed, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
+                Reset(dumpOut);
+            }
 
             // The scale dat's first landblock places 60 objects: compiling it against charting it.
             var landblockOut = Path.Combine(options.WorkDirectory, "landblock");
@@ -148,7 +170,7 @@ public static class BenchHarness
         checks.Add(new Check("collision reference and brute force give the same answers",
             collision.Disagreements == 0 ? [] : [$"{collision.Disagreements} of {collision.Queries} queries disagree"]));
 
-        var report = BenchReport.Build(options, machine, started, DateTime.UtcNow, full, quarter, timings, collision, checks, extraRatios);
+        var report = BenchReport.Build(options, machine, started, DateTime.UtcNow, MachineInfo.CurrentLoadAverage(), full, quarter, scaling, timings, collision, checks, extraRatios);
         report.Write(options.Output);
         report.PrintTable(log);
         log.WriteLine($"wrote {options.Output}");
@@ -188,7 +210,7 @@ public static class BenchHarness
         return new Timing(name, size, jobs, seconds, peaks, cpu, how, output);
     }
 
-    /// <summary>The bench's own entry assembly, run again as a child process for the floor and naive workloads.</summary>
+    /// <summary>The bench's own entry assembly, run again as a child process for the floor.</summary>
     private static string BenchExecutable => typeof(BenchHarness).Assembly.Location;
 
     /// <summary>

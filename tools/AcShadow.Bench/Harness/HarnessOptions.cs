@@ -20,7 +20,19 @@ public sealed record HarnessOptions(
     bool Small)
 {
     public const string Usage =
-        "usage: AcShadow.Bench harness --cli PATH [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--memory-work DIR|none] [--out bench.json]";
+        "usage: AcShadow.Bench harness --cli PATH [--installed PATH] [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--memory-work DIR|none] [--out bench.json]";
+
+    /// <summary>
+    /// The command `dotnet tool install` put on the PATH (scripts/bench.sh packs the tool and installs it into a
+    /// folder of its own): its start-up is timed as users meet it. Null: not measured.
+    /// </summary>
+    public string? InstalledCli { get; init; }
+
+    /// <summary>The dat `batch --all` scales from one job to all cores on (issue 30): 3,000 Setups, 15,000 GfxObjs, seed 7.</summary>
+    public const int ScalingSetups = 3000, ScalingGfxObjs = 15000, ScalingSeed = 7;
+
+    /// <summary>The scaling dat --small forges instead: a few Setups, proving the rows run (CI times nothing).</summary>
+    public const int SmallScalingSetups = 40;
 
     /// <summary>
     /// Where the write workloads run a second time, on a memory-backed file system, so the table shows the
@@ -53,6 +65,9 @@ public sealed record HarnessOptions(
             Path.GetFullPath(Value("--work") ?? Path.Combine(Path.GetTempPath(), $"acshadow-bench-{Environment.ProcessId}")),
             Value("--memory-work") is { } memory ? (memory == "none" ? null : Path.GetFullPath(memory)) : DefaultMemoryWork(),
             Path.GetFullPath(Value("--out") ?? "bench.json"),
-            small);
+            small)
+        {
+            InstalledCli = Value("--installed") is { } installed ? Path.GetFullPath(installed) : null,
+        };
     }
 }
