@@ -7,9 +7,11 @@
 # reference, writes bench.json and prints the table with the run's conditions (cores, load average at the start
 # and the end). Extra arguments go to the harness: --small (CI size), --setups N,
 # --gfxobjs M, --seed S, --reps R, --out FILE, --work DIR (the disk folder the write workloads use),
-# --memory-work DIR|none (their second, memory-backed run; default /dev/shm when present).
+# --memory-work DIR|none (their second, memory-backed run; default /dev/shm when present), --only GROUP,...
+# (export, scaling, chart-all, startup, landblock, cells; default all: ratios of skipped groups are left out).
 #
-#   scripts/bench.sh                # the full run (about 10-15 minutes on 2 cores, the first time)
+#   scripts/bench.sh                # the full run (about 40 minutes on 2 cores, most of it chart --all and the landblocks)
+#   scripts/bench.sh --only scaling,startup,landblock   # issue 30's targets only (about 12 minutes)
 #   scripts/bench.sh --small        # a quick check that everything runs
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -90,4 +90,38 @@ public sealed class HarnessTests
         Assert.False(Directory.Exists(options.WorkDirectory), "the harness leaves no output folders behind");
         Assert.False(Directory.Exists(options.MemoryWorkDirectory), "nor in its memory-backed work folder");
     }
+
+    [Fact]
+    public void A_run_limited_to_start_up_times_only_start_up_and_reports_only_its_ratios()
+    {
+        using var dir = new TempDir();
+        const int setups = 60;
+        var options = HarnessOptions.Parse(["--cli", Path.Combine(AppContext.BaseDirectory, "acshadow.dll"), "--small", "--setups", "60",
+            "--cache", Path.Combine(dir.Path, "cache"), "--work", Path.Combine(dir.Path, "work"), "--memory-work", "none",
+            "--out", Path.Combine(dir.Path, "bench.json"), "--only", "startup"]);
+        Assert.Equal(setups, options.Setups);
+        var log = new StringWriter();
+
+        var report = BenchHarness.Run(options, log);
+
+        Assert.Equal(["acshadow --version", "dump --setup", "dump --setup, new folder"], report.Timings.Select(t => t.Name));
+        // The start-up ratios and the in-process collision check; nothing built on a workload that did not run.
+        Assert.Equal(["dump / --version", "dump into a new folder / --version", "brute force / reference"], report.Ratios.Select(r => r.Name));
+        using var json = JsonDocument.Parse(File.ReadAllBytes(options.Output));
+        Assert.Equal("startup", json.RootElement.GetProperty("parameters").GetProperty("only").GetString());
+        Assert.Contains("Workloads: startup.", log.ToString());
+    }
+
+    [Fact]
+    public void Only_takes_known_groups_and_names_them_when_given_another()
+    {
+        string[] args = ["--cli", "acshadow", "--only"];
+        var both = HarnessOptions.Parse([.. args, "scaling, landblock"]);
+        Assert.True(both.Runs("scaling") && both.Runs("landblock"));
+        Assert.False(both.Runs("export") || both.Runs("chart-all") || both.Runs("startup") || both.Runs("cells"));
+        Assert.All(HarnessOptions.Groups, g => Assert.True(HarnessOptions.Parse(["--cli", "acshadow"]).Runs(g)));
+        var error = Assert.Throws<ArgumentException>(() => HarnessOptions.Parse([.. args, "scene"]));
+        Assert.Contains("export, scaling, chart-all, startup, landblock, cells", error.Message);
+        Assert.Contains("\"scene\"", error.Message);
+    }
 }

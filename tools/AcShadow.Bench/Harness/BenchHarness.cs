@@ -53,13 +53,13 @@ public static class BenchHarness
                 return outputs;
             }
             // How far a second job carries batch on a dat of 3,000 Setups (issue 30): batch alone, both places.
-            foreach (var (output, root) in OutputPlaces(options))
+            foreach (var (output, root) in options.Runs("scaling") ? OutputPlaces(options) : [])
             {
                 var place = new RunFolders(root, output == "disk");
                 Batches(BenchReport.ScalingSize, $"{scaling.Setups}-Setup dat", scaling, output, place);
                 if (output != "disk") place.Clear();
             }
-            foreach (var (size, dat) in new[] { ("quarter", quarter), ("full", full) })
+            foreach (var (size, dat) in options.Runs("export") ? new[] { ("quarter", quarter), ("full", full) } : [])
             {
                 foreach (var jobs in jobCounts)
                     timings.Add(Measure(log, options, "floor", size, jobs, "none", "read and decode every Setup and the GfxObjs its parts name, discard (bench process)",
@@ -91,7 +91,7 @@ public static class BenchHarness
 
             // chart --all at the scale of a real dat: one timed run (it takes minutes), default spacing and
             // probe radius, every core, streamed into a folder on disk. Not in --small: CI times nothing.
-            if (!options.Small)
+            if (!options.Small && options.Runs("chart-all"))
             {
                 var chartOut = Path.Combine(options.WorkDirectory, "chart");
                 timings.Add(Measure(log, options with { Repetitions = 1 }, "chart --all", "full", cores, "disk",
@@ -102,68 +102,89 @@ public static class BenchHarness
             }
 
             var dumpOut = Path.Combine(options.WorkDirectory, "dump");
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "none", "whole process",
-                _ => ProcessRunner.Run(options.Cli, ["--version"])));
-            // Again into its own folder (the everyday case: the files are there, unchanged), and into a new one.
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
-                _ => ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
-                _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut]); }));
-            Reset(dumpOut);
-            // The same start-up as users meet it: the command `dotnet tool install` put on the PATH.
-            if (options.InstalledCli is { } installed)
-            {
-                timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledVersion, "full", 1, "none", $"{installed} --version, whole process",
-                    _ => ProcessRunner.Run(installed, ["--version"])));
-                timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledDump, "full", 1, "disk", $"{installed} dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
-                    _ => ProcessRunner.Run(installed, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
-                Reset(dumpOut);
-            }
-
-            // The scale dat's first landblock places 60 objects: compiling it against charting it.
-            var landblockOut = Path.Combine(options.WorkDirectory, "landblock");
-            // --small proves both commands run; a 4 m grid keeps that to seconds (CI times nothing).
-            string[] probes = options.Small ? ["--spacing", "4"] : [];
-            timings.Add(Measure(log, options, "chart --landblock", "full", 1, "disk", $"acshadow chart --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
-                _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["chart", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet", .. probes]); }));
-            timings.Add(Measure(log, options, "scene --landblock", "full", 1, "disk", $"acshadow scene --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
-                _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["scene", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet", .. probes]); }));
-            // What compiling saves: the last run's scene chart, the whole landblock asked per mover position.
-            var sceneTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
-            extraRatios.AddRange(sceneTotals.Ratios(BusyLandblock));
-            log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"scene {BusyLandblock} per mover position: all-retail {sceneTotals.RetailNs:0.0} ns ({sceneTotals.RetailOps:0.0} counted operations), compiled {sceneTotals.CompiledNs:0.0} ns ({sceneTotals.CompiledOps:0.0}), exhaustive walk {sceneTotals.ExhaustiveNs:0.0} ns ({sceneTotals.ExhaustiveOps:0.0})"));
-            // The same on the built-in sample (one run: what is measured is inside it).
-            Reset(landblockOut);
-            var sample = ProcessRunner.Run(options.Cli, ["scene", "--landblock", SampleLandblock, "--out", landblockOut, "--quiet", .. probes]);
-            if (File.Exists(Path.Combine(landblockOut, "scene-chart.csv")))
-            {
-                var sampleTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
-                extraRatios.AddRange(sampleTotals.Ratios($"{SampleLandblock} (sample)"));
-                log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                    $"scene {SampleLandblock} (sample) per mover position: all-retail {sampleTotals.RetailNs:0.0} ns ({sampleTotals.RetailOps:0.0} counted operations), compiled {sampleTotals.CompiledNs:0.0} ns ({sampleTotals.CompiledOps:0.0}), exhaustive walk {sampleTotals.ExhaustiveNs:0.0} ns ({sampleTotals.ExhaustiveOps:0.0})"));
-            }
-            else checks.Add(new Check($"scene --landblock {SampleLandblock} on the built-in sample runs", [sample.Stderr.Trim()]));
-            Reset(landblockOut);
-
-            // A landblock's scene with and without its interiors: the landblock with the most cells.
-            var landblock = BusiestLandblock(full.Directory);
-            var sceneOut = Path.Combine(options.WorkDirectory, "scene");
-            foreach (var (name, extra) in new[] { ("batch --landblock, with cells", Array.Empty<string>()), ("batch --landblock --no-cells", ["--no-cells"]) })
-                timings.Add(Measure(log, options, name, "full", cores, "disk", $"acshadow batch --landblock {landblock.Id} ({landblock.Cells} cells) {string.Join(' ', extra)} --quiet into a new folder",
-                    _ =>
-                    {
-                        Reset(sceneOut);
-                        return ProcessRunner.Run(options.Cli, ["batch", "--landblock", landblock.Id, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", sceneOut, "--quiet", .. extra]);
-                    }));
-            Reset(sceneOut);
+            if (options.Runs("startup")) StartUp(log, options, timings, full, dumpOut);
+            if (options.Runs("landblock")) Landblocks(log, options, timings, checks, extraRatios, full);
+            if (options.Runs("cells")) Cells(log, options, timings, cores, full);
         }
         finally
         {
             foreach (var (_, root) in OutputPlaces(options))
                 try { Directory.Delete(root, true); } catch (IOException) { }
         }
+        return Report(log, options, machine, started, full, quarter, scaling, timings, checks, extraRatios);
+    }
 
+    /// <summary>Start-up: `--version` against `dump` of the door, as built and as `dotnet tool install` put it on the PATH.</summary>
+    private static void StartUp(TextWriter log, HarnessOptions options, List<Timing> timings, CachedDat full, string dumpOut)
+    {
+        timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "none", "whole process",
+            _ => ProcessRunner.Run(options.Cli, ["--version"])));
+        // Again into its own folder (the everyday case: the files are there, unchanged), and into a new one.
+        timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
+            _ => ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
+        timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
+            _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut]); }));
+        Reset(dumpOut);
+        // The same start-up as users meet it: the command `dotnet tool install` put on the PATH.
+        if (options.InstalledCli is { } installed)
+        {
+            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledVersion, "full", 1, "none", $"{installed} --version, whole process",
+                _ => ProcessRunner.Run(installed, ["--version"])));
+            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledDump, "full", 1, "disk", $"{installed} dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
+                _ => ProcessRunner.Run(installed, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
+            Reset(dumpOut);
+        }
+    }
+
+    /// <summary>The scale dat's busy landblock charted and compiled, and the sample's landblock compiled: per-position ratios.</summary>
+    private static void Landblocks(TextWriter log, HarnessOptions options, List<Timing> timings, List<Check> checks, List<Ratio> extraRatios, CachedDat full)
+    {
+        // The scale dat's first landblock places 60 objects: compiling it against charting it.
+        var landblockOut = Path.Combine(options.WorkDirectory, "landblock");
+        // --small proves both commands run; a 4 m grid keeps that to seconds (CI times nothing).
+        string[] probes = options.Small ? ["--spacing", "4"] : [];
+        timings.Add(Measure(log, options, "chart --landblock", "full", 1, "disk", $"acshadow chart --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
+            _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["chart", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet", .. probes]); }));
+        timings.Add(Measure(log, options, "scene --landblock", "full", 1, "disk", $"acshadow scene --landblock {BusyLandblock} --quiet (60 placed objects), whole process",
+            _ => { Reset(landblockOut); return ProcessRunner.Run(options.Cli, ["scene", "--landblock", BusyLandblock, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", landblockOut, "--quiet", .. probes]); }));
+        // What compiling saves: the last run's scene chart, the whole landblock asked per mover position.
+        var sceneTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
+        extraRatios.AddRange(sceneTotals.Ratios(BusyLandblock));
+        log.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"scene {BusyLandblock} per mover position: all-retail {sceneTotals.RetailNs:0.0} ns ({sceneTotals.RetailOps:0.0} counted operations), compiled {sceneTotals.CompiledNs:0.0} ns ({sceneTotals.CompiledOps:0.0}), exhaustive walk {sceneTotals.ExhaustiveNs:0.0} ns ({sceneTotals.ExhaustiveOps:0.0})"));
+        // The same on the built-in sample (one run: what is measured is inside it).
+        Reset(landblockOut);
+        var sample = ProcessRunner.Run(options.Cli, ["scene", "--landblock", SampleLandblock, "--out", landblockOut, "--quiet", .. probes]);
+        if (File.Exists(Path.Combine(landblockOut, "scene-chart.csv")))
+        {
+            var sampleTotals = SceneChartTotals.Read(Path.Combine(landblockOut, "scene-chart.csv"));
+            extraRatios.AddRange(sampleTotals.Ratios($"{SampleLandblock} (sample)"));
+            log.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"scene {SampleLandblock} (sample) per mover position: all-retail {sampleTotals.RetailNs:0.0} ns ({sampleTotals.RetailOps:0.0} counted operations), compiled {sampleTotals.CompiledNs:0.0} ns ({sampleTotals.CompiledOps:0.0}), exhaustive walk {sampleTotals.ExhaustiveNs:0.0} ns ({sampleTotals.ExhaustiveOps:0.0})"));
+        }
+        else checks.Add(new Check($"scene --landblock {SampleLandblock} on the built-in sample runs", [sample.Stderr.Trim()]));
+        Reset(landblockOut);
+    }
+
+    /// <summary>A landblock's batch with and without its indoor cells.</summary>
+    private static void Cells(TextWriter log, HarnessOptions options, List<Timing> timings, int cores, CachedDat full)
+    {
+        // A landblock's scene with and without its interiors: the landblock with the most cells.
+        var landblock = BusiestLandblock(full.Directory);
+        var sceneOut = Path.Combine(options.WorkDirectory, "scene");
+        foreach (var (name, extra) in new[] { ("batch --landblock, with cells", Array.Empty<string>()), ("batch --landblock --no-cells", ["--no-cells"]) })
+            timings.Add(Measure(log, options, name, "full", cores, "disk", $"acshadow batch --landblock {landblock.Id} ({landblock.Cells} cells) {string.Join(' ', extra)} --quiet into a new folder",
+                _ =>
+                {
+                    Reset(sceneOut);
+                    return ProcessRunner.Run(options.Cli, ["batch", "--landblock", landblock.Id, "--dat", full.Directory, "--cell-dat", full.Directory, "--out", sceneOut, "--quiet", .. extra]);
+                }));
+        Reset(sceneOut);
+    }
+
+    private static BenchReport Report(TextWriter log, HarnessOptions options, MachineInfo machine, DateTime started, CachedDat full, CachedDat quarter, CachedDat scaling,
+        List<Timing> timings, List<Check> checks, List<Ratio> extraRatios)
+    {
         log.WriteLine("collision: reference vs brute force on GfxObjs of 200+ polygons (full dat, in-process)");
         CollisionResult collision;
         using (var dat = Workloads.Open(full.Directory)) collision = CollisionComparison.Run(dat, options.Repetitions);

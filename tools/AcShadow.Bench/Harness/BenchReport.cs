@@ -43,48 +43,55 @@ public sealed record BenchReport(
         CachedDat full, CachedDat quarter, CachedDat scaling, IReadOnlyList<Timing> timings, CollisionResult collision, IReadOnlyList<Check> checks,
         IReadOnlyList<Ratio>? measured = null)
     {
-        var cores = timings.Where(t => t.Name == "batch").Max(t => t.Jobs);
+        var cores = timings.Where(t => t.Name == "batch").Select(t => t.Jobs).DefaultIfEmpty(Environment.ProcessorCount).Max();
         Timing Get(string name, string size, int jobs, string output = "disk") =>
-            timings.Single(t => t.Name == name && t.Size == size && t.Jobs == jobs && t.Output == output);
+            timings.SingleOrDefault(t => t.Name == name && t.Size == size && t.Jobs == jobs && t.Output == output) ?? throw new SkippedWorkload();
         var ratios = new List<Ratio>();
+        // A ratio whose workloads this run did not measure (--only) is left out, not reported as zero.
+        void Add(Func<Ratio> ratio)
+        {
+            try { ratios.Add(ratio()); }
+            catch (SkippedWorkload) { }
+        }
         // What all cores buy on each place the batches ran: the disk shows what a user waits for, memory (tmpfs)
         // what the tool itself costs once file creation is cheap. Batch against the floor and against a naive
         // exporter are retired (docs/performance.md: neither could be met without writing less than consumers read).
         foreach (var output in timings.Where(t => t.Name == "batch").Select(t => t.Output).Distinct())
         {
             var where = output == "disk" ? "" : $" ({output})";
-            ratios.Add(new($"batch 1 job / {cores} jobs{where}", Get("batch", "full", 1, output).Median / Get("batch", "full", cores, output).Median, ">=", cores > 1 ? 1.7 : 1,
+            Add(() => new($"batch 1 job / {cores} jobs{where}", Get("batch", "full", 1, output).Median / Get("batch", "full", cores, output).Median, ">=", cores > 1 ? 1.7 : 1,
                 $"speed-up from all cores on the scale dat, output on {output}"));
-            ratios.Add(new($"batch 1 job / {cores} jobs, {scaling.Setups}-Setup dat{where}",
+            Add(() => new($"batch 1 job / {cores} jobs, {scaling.Setups}-Setup dat{where}",
                 Get("batch", ScalingSize, 1, output).Median / Get("batch", ScalingSize, cores, output).Median, ">=", cores > 1 ? ScalingTarget : 1,
                 $"speed-up from all cores on the {scaling.Setups}-Setup / {scaling.GfxObjs}-GfxObj dat (seed {scaling.Seed}), output on {output}"));
         }
-        var batch1 = Get("batch", "full", 1);
-        var batchN = Get("batch", "full", cores);
-        ratios.AddRange(
-        [
-            new("incremental / full run", Get("batch --incremental", "full", cores).Median / batchN.Median, "<=", 0.5, "--incremental with nothing changed over a full run"),
-            new("dump / --version", Get("dump --setup", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "dump --setup as a whole process over acshadow --version, into the folder it wrote before"),
-            new("dump into a new folder / --version", Get("dump --setup, new folder", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "the same, every file created"),
-            new("peak MiB, scene --landblock (full)", Get("scene --landblock", "full", 1).PeakMedianMiB, "<=", SceneMemoryLimitMiB,
+        Timing Batch1() => Get("batch", "full", 1);
+        Timing BatchN() => Get("batch", "full", cores);
+        foreach (var ratio in new Func<Ratio>[]
+        {
+            () => new("incremental / full run", Get("batch --incremental", "full", cores).Median / BatchN().Median, "<=", 0.5, "--incremental with nothing changed over a full run"),
+            () => new("dump / --version", Get("dump --setup", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "dump --setup as a whole process over acshadow --version, into the folder it wrote before"),
+            () => new("dump into a new folder / --version", Get("dump --setup, new folder", "full", 1).Median / Get("acshadow --version", "full", 1, "none").Median, "<=", 1.3, "the same, every file created"),
+            () => new("peak MiB, scene --landblock (full)", Get("scene --landblock", "full", 1).PeakMedianMiB, "<=", SceneMemoryLimitMiB,
                 $"peak resident memory of compiling the scale dat's {AcShadow.Forge.Scale.ScaleSpecGenerator.BusyLandblockObjects}-object landblock"),
-            new($"peak MiB, batch {cores} jobs (full)", batchN.PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all"),
-            new("peak MiB, batch 1 job (full)", batch1.PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all --jobs 1"),
-            new($"peak full / quarter, batch {cores} jobs", batchN.PeakMedianMiB / Get("batch", "quarter", cores).PeakMedianMiB, "<=", 1.3, "how peak memory grows with the dat"),
-            new($"doctor / batch, {cores} jobs", Get("doctor", "full", cores, "none").Median / batchN.Median, "<=", 2, "acshadow doctor over batch --all, both at all cores, batch writing to disk"),
-            new($"peak full / quarter, doctor {cores} jobs", Get("doctor", "full", cores, "none").PeakMedianMiB / Get("doctor", "quarter", cores, "none").PeakMedianMiB, "<=", 1.3, "how the doctor's peak memory grows with the dat"),
-            new("scene / chart --landblock", Get("scene --landblock", "full", 1).Median / Get("chart --landblock", "full", 1).Median, "<=", 2,
+            () => new($"peak MiB, batch {cores} jobs (full)", BatchN().PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all"),
+            () => new("peak MiB, batch 1 job (full)", Batch1().PeakMedianMiB, "<=", MemoryLimitMiB, "peak resident memory of batch --all --jobs 1"),
+            () => new($"peak full / quarter, batch {cores} jobs", BatchN().PeakMedianMiB / Get("batch", "quarter", cores).PeakMedianMiB, "<=", 1.3, "how peak memory grows with the dat"),
+            () => new($"doctor / batch, {cores} jobs", Get("doctor", "full", cores, "none").Median / BatchN().Median, "<=", 2, "acshadow doctor over batch --all, both at all cores, batch writing to disk"),
+            () => new($"peak full / quarter, doctor {cores} jobs", Get("doctor", "full", cores, "none").PeakMedianMiB / Get("doctor", "quarter", cores, "none").PeakMedianMiB, "<=", 1.3, "how the doctor's peak memory grows with the dat"),
+            () => new("scene / chart --landblock", Get("scene --landblock", "full", 1).Median / Get("chart --landblock", "full", 1).Median, "<=", 2,
                 $"compiling the scale dat's {AcShadow.Forge.Scale.ScaleSpecGenerator.BusyLandblockObjects}-object landblock over charting it, whole processes"),
-            new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
+            () => new("brute force / reference", Timing.MedianOf(collision.BruteForceNanoseconds) / Timing.MedianOf(collision.ReferenceNanoseconds), ">=", 5,
                 $"per-query speed-up of the collision reference on GfxObjs of {CollisionComparison.MinPolygons}+ polygons"),
-        ]);
+        })
+            Add(ratio);
         // Not measured by --small (CI times nothing).
         if (timings.FirstOrDefault(t => t.Name == "chart --all") is { } chartAll)
-            ratios.Add(new($"chart --all, {cores} jobs (full), minutes", chartAll.Median / 60, "<=", 30,
+            Add(() => new($"chart --all, {cores} jobs (full), minutes", chartAll.Median / 60, "<=", 30,
                 $"the whole scale dat charted at default spacing and probe radius, {chartAll.PeakMedianMiB:0} MiB peak"));
         // What `dotnet tool install` put on the PATH (scripts/bench.sh packs and installs it), when measured.
         if (timings.FirstOrDefault(t => t.Name == InstalledVersion) is { } installedVersion)
-            ratios.Add(new("dump / --version, installed tool", Get(InstalledDump, "full", 1).Median / installedVersion.Median, "<=", 1.3,
+            Add(() => new("dump / --version, installed tool", Get(InstalledDump, "full", 1).Median / installedVersion.Median, "<=", 1.3,
                 $"dump --setup over --version, both run as the command `dotnet tool install` put on the PATH ({options.InstalledCli})"));
         ratios.AddRange(measured ?? []);
         return new BenchReport(options, machine, started, finished, full, quarter, scaling, loadAtEnd, timings, collision, checks, ratios);
@@ -116,6 +123,7 @@ public sealed record BenchReport(
             w.WriteString("work", Options.WorkDirectory);
             if (Options.MemoryWorkDirectory is { } memory) w.WriteString("memoryWork", memory);
             if (Options.InstalledCli is { } installed) w.WriteString("installedCli", installed);
+            w.WriteString("only", string.Join(",", HarnessOptions.Groups.Where(Options.Runs)));
             w.WriteEndObject();
             w.WriteStartObject("dats");
             foreach (var (name, dat) in new[] { ("full", Full), ("quarter", Quarter), (ScalingSize, Scaling) })
@@ -200,7 +208,7 @@ public sealed record BenchReport(
     public void PrintTable(TextWriter o)
     {
         o.WriteLine(Invariant($"Scale dat: {Full.Setups} Setups, {Full.GfxObjs} GfxObjs, {Full.PortalBytes / 1048576.0:0} MiB (forged in {Full.GenerationSeconds:0.0} s); quarter: {Quarter.Setups} Setups, {Quarter.GfxObjs} GfxObjs, {Quarter.PortalBytes / 1048576.0:0} MiB; scaling: {Scaling.Setups} Setups, {Scaling.GfxObjs} GfxObjs, seed {Scaling.Seed}, {Scaling.PortalBytes / 1048576.0:0} MiB."));
-        o.WriteLine(Invariant($"Conditions: {Machine.Cores} cores, {Machine.Cpu}, {Machine.RamGiB:0} GiB RAM, {Machine.Os}, {Machine.Dotnet}; load average {Machine.LoadAverage:0.00} at the start and {LoadAverageAtEnd:0.00} at the end ({Started:yyyy-MM-dd HH:mm}-{Finished:HH:mm} UTC). Each figure: median of {Options.Repetitions} run(s) after a warm-up."));
+        o.WriteLine(Invariant($"Conditions: {Machine.Cores} cores, {Machine.Cpu}, {Machine.RamGiB:0} GiB RAM, {Machine.Os}, {Machine.Dotnet}; load average {Machine.LoadAverage:0.00} at the start and {LoadAverageAtEnd:0.00} at the end ({Started:yyyy-MM-dd HH:mm}-{Finished:HH:mm} UTC). Each figure: median of {Options.Repetitions} run(s) after a warm-up. Workloads: {string.Join(", ", HarnessOptions.Groups.Where(Options.Runs))}."));
         o.WriteLine();
         o.WriteLine("| What | Dat | Jobs | Output | Median s | Min s | Max s | CPU s | Peak MiB |");
         o.WriteLine("|---|---|---|---|---|---|---|---|---|");
@@ -222,3 +230,6 @@ public sealed record BenchReport(
 
     private static string Invariant(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
 }
+
+/// <summary>A workload this run skipped (<c>--only</c>): the ratios built on it are left out.</summary>
+internal sealed class SkippedWorkload : Exception;

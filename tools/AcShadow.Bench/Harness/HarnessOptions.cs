@@ -20,13 +20,25 @@ public sealed record HarnessOptions(
     bool Small)
 {
     public const string Usage =
-        "usage: AcShadow.Bench harness --cli PATH [--installed PATH] [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--memory-work DIR|none] [--out bench.json]";
+        "usage: AcShadow.Bench harness --cli PATH [--installed PATH] [--small] [--setups N] [--gfxobjs M] [--seed S] [--reps R] [--cache DIR] [--work DIR] [--memory-work DIR|none] [--only GROUP,...] [--out bench.json]";
 
     /// <summary>
     /// The command `dotnet tool install` put on the PATH (scripts/bench.sh packs the tool and installs it into a
     /// folder of its own): its start-up is timed as users meet it. Null: not measured.
     /// </summary>
     public string? InstalledCli { get; init; }
+
+    /// <summary>The workload groups a run can be limited to with <c>--only</c>; every group runs by default.</summary>
+    public static readonly IReadOnlyList<string> Groups = ["export", "scaling", "chart-all", "startup", "landblock", "cells"];
+
+    /// <summary>
+    /// The groups this run measures (<c>--only export,scaling</c>): a run of a few targets on a quiet machine takes
+    /// minutes where the whole run takes most of an hour. Ratios whose workloads were skipped are left out.
+    /// </summary>
+    public IReadOnlySet<string> Only { get; init; } = Groups.ToHashSet(StringComparer.Ordinal);
+
+    /// <summary>Does this run measure the group?</summary>
+    public bool Runs(string group) => Only.Contains(group);
 
     /// <summary>The dat `batch --all` scales from one job to all cores on (issue 30): 3,000 Setups, 15,000 GfxObjs, seed 7.</summary>
     public const int ScalingSetups = 3000, ScalingGfxObjs = 15000, ScalingSeed = 7;
@@ -68,6 +80,15 @@ public sealed record HarnessOptions(
             small)
         {
             InstalledCli = Value("--installed") is { } installed ? Path.GetFullPath(installed) : null,
+            Only = Value("--only") is { } only ? ParseGroups(only) : Groups.ToHashSet(StringComparer.Ordinal),
         };
+    }
+
+    private static HashSet<string> ParseGroups(string text)
+    {
+        var groups = text.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries).ToHashSet(StringComparer.Ordinal);
+        if (groups.Count == 0 || groups.Any(g => !Groups.Contains(g)))
+            throw new ArgumentException($"--only takes workload groups separated by commas ({string.Join(", ", Groups)}), not \"{text}\"");
+        return groups;
     }
 }
