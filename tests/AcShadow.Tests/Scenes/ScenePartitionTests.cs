@@ -36,6 +36,23 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     }
 
     [Fact]
+    public void A_partitioned_query_allocates_nothing()
+    {
+        var report = SceneCompileTests.Exact.Value;
+        var probes = Positions(report).ToArray();
+        foreach (var pick in new Func<ObjectCompilation, AcShadow.Analysis.Chart.Models.PreparedModel?>[] { c => c.Retail, c => c.Chosen })
+        {
+            var query = SceneCompiler.Query(report, pick);
+            var blocked = 0;
+            foreach (var (at, r) in probes) blocked += query.Overlaps(at, r) ? 1 : 0;
+            var before = GC.GetAllocatedBytesForCurrentThread();
+            foreach (var (at, r) in probes) blocked += query.Overlaps(at, r) ? 1 : 0;
+            Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+            Assert.InRange(blocked, 2, 2 * probes.Length - 2);
+        }
+    }
+
+    [Fact]
     public void The_partition_answers_as_the_exhaustive_walk_on_every_probe_of_a_forged_scale_landblock()
     {
         Assert.True(LandblockIds.TryParse("0x0000", out var landblock));
