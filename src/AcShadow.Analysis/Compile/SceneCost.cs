@@ -10,8 +10,8 @@ namespace AcShadow.Analysis.Compile;
 /// <summary>
 /// What asking the whole scene about one mover position costs, counted as <see cref="QueryCost"/> counts
 /// an object (one unit a distance evaluation), along the walk <see cref="SceneQuery"/> takes: the sphere's
-/// land cells found <see cref="LandCellReach"/>, each land cell visited <see cref="LandCellVisit"/>, then
-/// for each object registered there its bounding sphere 1 and, for a position inside it, the turn into the
+/// land cells found <see cref="LandCellReach"/>, their candidate list loaded <see cref="LandCellVisit"/>, then
+/// for each object it holds its bounding sphere 1 and, for a position inside it, the turn into the
 /// object's frame and its model's count; for each indoor cell registered there its root sphere in the
 /// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
 /// stopping at the first that blocks. <see cref="SceneWalk.Exhaustive"/> counts the old walk
@@ -22,7 +22,7 @@ internal static class SceneCost
     /// <summary>Finding the sphere's land cells: four floors and a clamp, about one distance evaluation.</summary>
     public const int LandCellReach = 1;
 
-    /// <summary>Visiting one land cell's list (its load and the once-only check of each entry it holds is in the entry's 1).</summary>
+    /// <summary>Loading one candidate list: a mover range's flat array, or (a mover wider than a cell) one land cell's list.</summary>
     public const int LandCellVisit = 1;
 
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,

@@ -19,6 +19,9 @@ namespace AcShadow.Fixtures.Scenes;
 /// the partition only skips entries that cannot answer, and answers are the exhaustive walk's, bit for bit.
 /// An entry asked in several of the mover's cells is asked once (in the first cell, y then x, of the overlap).
 /// An entry whose bound is missing, not finite or wider than <see cref="MaxSpan"/> cells is asked everywhere.
+/// A mover's cells are at most 3 x 3 while its radius is under a cell (every mover the scenes declare): for
+/// each such range the walk's candidates (deduplicated, in the walk's order) are one flat array built here,
+/// so a query is one index and one loop; a wider range walks the cells' lists, with the same answers.
 /// </summary>
 internal sealed class LandCellPartition
 {
@@ -35,6 +38,10 @@ internal sealed class LandCellPartition
     private readonly int[][] _cells;
     private readonly int[] _everywhere;
     private readonly CellRange[] _footprints;
+    private readonly int[][] _ranges;
+
+    /// <summary>The widest mover range, in cells a side, that has a flat candidate array.</summary>
+    private const int FlatSpan = 3;
 
     /// <summary>Land cells x0..x1 by y0..y1, inclusive (cell i spans [24 i, 24 (i + 1)) metres).</summary>
     public readonly record struct CellRange(int X0, int Y0, int X1, int Y1)
@@ -50,7 +57,7 @@ internal sealed class LandCellPartition
         /// <summary>Asks entry <paramref name="entry"/>; true ends the walk (the entry blocks).</summary>
         bool Test(int entry);
 
-        /// <summary>Told of each land cell the walk visits (a counted cost may weigh it).</summary>
+        /// <summary>Told of each candidate list the walk loads: one flat array, or each land cell's list (a counted cost may weigh it).</summary>
         void Visit();
     }
 
@@ -68,6 +75,42 @@ internal sealed class LandCellPartition
         _cells = cells;
         _everywhere = everywhere;
         _footprints = footprints;
+        _ranges = FlatRanges();
+    }
+
+    /// <summary>
+    /// For every range of at most <see cref="FlatSpan"/> x <see cref="FlatSpan"/> cells inside the grid, the
+    /// entries the cell-by-cell walk asks there, in its order, each once (index: <see cref="RangeIndex"/>).
+    /// </summary>
+    private int[][] FlatRanges()
+    {
+        var ranges = new int[_width * _height * FlatSpan * FlatSpan][];
+        var list = new List<int>();
+        for (var y0 = _y0; y0 < _y0 + _height; y0++)
+            for (var x0 = _x0; x0 < _x0 + _width; x0++)
+                for (var h = 1; h <= FlatSpan; h++)
+                    for (var w = 1; w <= FlatSpan; w++)
+                    {
+                        var q = new CellRange(x0, y0, x0 + w - 1, y0 + h - 1);
+                        if (q.X1 >= _x0 + _width || q.Y1 >= _y0 + _height) continue;
+                        list.Clear();
+                        for (var y = q.Y0; y <= q.Y1; y++)
+                            for (var x = q.X0; x <= q.X1; x++)
+                                foreach (var e in _cells[(y - _y0) * _width + (x - _x0)])
+                                    if (IsFirstShared(e, q, x, y)) list.Add(e);
+                        ranges[RangeIndex(q)] = list.Count == 0 ? [] : [.. list];
+                    }
+        return ranges;
+    }
+
+    private int RangeIndex(CellRange q) =>
+        (((q.Y0 - _y0) * _width + (q.X0 - _x0)) * FlatSpan + (q.Y1 - q.Y0)) * FlatSpan + (q.X1 - q.X0);
+
+    /// <summary>Is (x, y) the first cell, y then x, that entry <paramref name="e"/>'s footprint and range <paramref name="q"/> share.</summary>
+    private bool IsFirstShared(int e, CellRange q, int x, int y)
+    {
+        ref readonly var f = ref _footprints[e];
+        return x == Math.Max(f.X0, q.X0) && y == Math.Max(f.Y0, q.Y0);
     }
 
     /// <summary>
@@ -113,17 +156,20 @@ internal sealed class LandCellPartition
         foreach (var e in _everywhere)
             if (test.Test(e)) return true;
         if (!Reach(center, radius, out var q)) return false;
+        if (q.X1 - q.X0 < FlatSpan && q.Y1 - q.Y0 < FlatSpan)
+        {
+            test.Visit();
+            foreach (var e in _ranges[RangeIndex(q)])
+                if (test.Test(e)) return true;
+            return false;
+        }
         for (var y = q.Y0; y <= q.Y1; y++)
             for (var x = q.X0; x <= q.X1; x++)
             {
                 test.Visit();
                 foreach (var e in _cells[(y - _y0) * _width + (x - _x0)])
-                {
-                    ref readonly var f = ref _footprints[e];
                     // Asked in the first cell both ranges share, so once however many cells it covers.
-                    if (x != Math.Max(f.X0, q.X0) || y != Math.Max(f.Y0, q.Y0)) continue;
-                    if (test.Test(e)) return true;
-                }
+                    if (IsFirstShared(e, q, x, y) && test.Test(e)) return true;
             }
         return false;
     }
