@@ -20,7 +20,7 @@ internal sealed record CellCompilation(
     BspDump? Physics,
     CompiledBsp? Bsp,
     PartPose Frame,
-    Probe[] Probes,
+    ProbeSpheres Probes,
     Bounds Bounds,
     IReadOnlyList<Diagnostic> Diagnostics)
 {

@@ -96,7 +96,7 @@ internal static class CompiledSceneWriter
         var probes = new JsonObj();
         foreach (var kind in new[] { ProbeKind.Grid }.Concat(ProbeKinds.Stability))
             probes.Add(kind == ProbeKind.SplittingPlane ? "splittingPlane" : ProbeKinds.Name(kind), ChartProbes.Count(c.Probes, kind));
-        probes.Add("total", c.Probes.Length);
+        probes.Add("total", c.Probes.Count);
         return new JsonObj()
             .Add("cellId", JsonIds.Format(c.Cell.Id))
             .Add("environmentId", JsonIds.Format(c.Cell.EnvironmentFileId))
@@ -136,7 +136,7 @@ internal static class CompiledSceneWriter
             json.Add("bound", new JsonObj().Add("center", center).Add("radius", radius));
         }
         else json.Add("bound", JsonNull.Value);
-        json.Add("evidence", c is null || c.Probes.Length == 0 ? JsonNull.Value : Evidence(c));
+        json.Add("evidence", c is null || c.Probes.Count == 0 ? JsonNull.Value : Evidence(c));
         json.Add("diagnostics", JsonArr.Of(c?.Diagnostics ?? [], d => new JsonObj().Add("code", d.Code).Add("message", d.Message)));
         return json;
     }
@@ -146,7 +146,7 @@ internal static class CompiledSceneWriter
         var probes = new JsonObj();
         foreach (var kind in new[] { ProbeKind.Grid, ProbeKind.Doorway }.Concat(ProbeKinds.Stability))
             probes.Add(kind == ProbeKind.SplittingPlane ? "splittingPlane" : ProbeKinds.Name(kind), ChartProbes.Count(c.Probes, kind));
-        probes.Add("total", c.Probes.Length);
+        probes.Add("total", c.Probes.Count);
         return new JsonObj()
             .Add("probes", probes)
             .Add("candidates", JsonArr.Of(c.Candidates, k => new JsonObj()

@@ -18,7 +18,7 @@ internal sealed record CandidateOutcome(string Model, int Shapes, int FalsePass,
 
 /// <summary>
 /// One distinct object of a scene (a Setup or a bare GfxObj, every placement of it shares this) compiled:
-/// the chosen model prepared, retail prepared, the probes and retail's answers, every candidate tried, and
+/// the chosen model prepared, retail prepared, the probes (compactly: what the whole-scene check and the reports read), every candidate tried, and
 /// the time per query of the chosen model and of retail over the probes, and their counted cost. <see cref="Model"/> is null when
 /// the object could not be described (see the diagnostics); "none" when nothing of it collides.
 /// </summary>
@@ -28,9 +28,7 @@ internal sealed record ObjectCompilation(
     string? Model,
     PreparedModel? Chosen,
     PreparedModel? Retail,
-    Probe[] Probes,
-    bool[] RetailAnswers,
-    bool[] ChosenAnswers,
+    ProbeSpheres Probes,
     IReadOnlyList<CandidateOutcome> Candidates,
     TimingStats ChosenTiming,
     TimingStats RetailTiming,

@@ -32,16 +32,16 @@ internal static class SceneChartCsv
         foreach (var placed in report.Placed.Select(p => p.Object))
         {
             var c = report.For(placed);
-            var probes = c?.Probes.Length ?? 0;
+            var probes = c?.Probes.Count ?? 0;
             var agree = probes - (c?.FalsePass ?? 0) - (c?.FalseBlock ?? 0);
             Row(csv, "object", I(placed.Index), JsonIds.Format(placed.Id), c?.Model ?? ObjectCompilation.UnresolvedLabel, c?.Chosen?.Shapes.Count ?? 0, probes, agree,
                 probes == 0 ? 100 : 100.0 * agree / probes, c?.FalsePass ?? 0, c?.FalseBlock ?? 0,
                 c?.ChosenTiming.MedianNs ?? double.NaN, c?.ChosenTiming.P10Ns ?? double.NaN, c?.ChosenTiming.P90Ns ?? double.NaN, c?.RetailTiming.MedianNs ?? double.NaN,
-                c is null || c.Probes.Length == 0 ? double.NaN : c.ChosenOps, c is null || c.Probes.Length == 0 ? double.NaN : c.RetailOps);
+                c is null || c.Probes.Count == 0 ? double.NaN : c.ChosenOps, c is null || c.Probes.Count == 0 ? double.NaN : c.RetailOps);
         }
         foreach (var cell in report.Cells)
             Row(csv, "cell", "", JsonIds.Format(cell.Cell.Id), cell.Bsp is null ? ObjectCompilation.UnresolvedLabel : CellCompilation.Model, cell.Bsp is null ? 0 : 1,
-                cell.Probes.Length, cell.Probes.Length, 100, 0, 0, double.NaN, double.NaN, double.NaN, double.NaN, double.NaN, double.NaN);
+                cell.Probes.Count, cell.Probes.Count, 100, 0, 0, double.NaN, double.NaN, double.NaN, double.NaN, double.NaN, double.NaN);
         return csv.ToString();
     }
 

@@ -42,10 +42,10 @@ internal static class SceneChartSvg
             var c = report.For(placed);
             var y = 250 + k * Row;
             svg.Text(20, y + 12, $"#{I(placed.Index)} {JsonIds.Format(placed.Id)} → {c?.Model ?? ObjectCompilation.UnresolvedLabel}", 12, "start", "normal", ModelColour(c?.Model));
-            if (c is null || c.Probes.Length == 0) continue;
+            if (c is null || c.Probes.Count == 0) continue;
             svg.Rect(Left, y + 2, X(c.RetailTiming.MedianNs, perObject) - Left, 8, DrawingPalette.AgreeBlocked, title: $"retail {Time(c.RetailTiming.MedianNs)}");
             svg.Rect(Left, y + 11, X(c.ChosenTiming.MedianNs, perObject) - Left, 8, ModelColour(c.Model), title: $"{c.Model} {Time(c.ChosenTiming.MedianNs)}");
-            svg.Text(Left + BarWidth + 10, y + 12, $"{Time(c.ChosenTiming.MedianNs)} vs {Time(c.RetailTiming.MedianNs)}; {I(c.Probes.Length)} probes, {I(c.FalsePass)} false pass, {I(c.FalseBlock)} false block", 10.5);
+            svg.Text(Left + BarWidth + 10, y + 12, $"{Time(c.ChosenTiming.MedianNs)} vs {Time(c.RetailTiming.MedianNs)}; {I(c.Probes.Count)} probes, {I(c.FalsePass)} false pass, {I(c.FalseBlock)} false block", 10.5);
         }
         for (var k = 0; k < report.Cells.Count; k++)
         {
@@ -53,7 +53,7 @@ internal static class SceneChartSvg
             var y = 250 + (objects.Length + k) * Row;
             svg.Text(20, y + 12, $"cell {JsonIds.Format(cell.Cell.Id)} → {(cell.Bsp is null ? ObjectCompilation.UnresolvedLabel : CellCompilation.Model)}", 12, "start", "normal", ModelColour(cell.Bsp is null ? null : CellCompilation.Model));
             if (cell.Bsp is not null)
-                svg.Text(Left, y + 12, $"kept as retail: a room a mover stands inside, which every cheaper (solid) model would fill; {I(cell.Bsp.Polygons.Length)} polygons, {I(cell.Probes.Length)} probes", 10.5);
+                svg.Text(Left, y + 12, $"kept as retail: a room a mover stands inside, which every cheaper (solid) model would fill; {I(cell.Bsp.Polygons.Length)} polygons, {I(cell.Probes.Count)} probes", 10.5);
         }
         svg.Text(20, height - 20, "Times are measurements: they vary with machine, load and build. Disagreements do not.", 11);
         return svg.Render();

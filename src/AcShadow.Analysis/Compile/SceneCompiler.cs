@@ -60,19 +60,19 @@ internal static class SceneCompiler
         var frame = new PartPose(cell.Position.Position, ClientFrameMatrix.PlacedRotation(cell.Position.Rotation), 1f);
         var (geometry, problem) = structures.For(cell.EnvironmentFileId, cell.CellStructure);
         if (geometry is null)
-            return new CellCompilation(cell, null, null, frame, [], Bounds.Empty, [new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
+            return new CellCompilation(cell, null, null, frame, ProbeSpheres.Empty, Bounds.Empty, [new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: {problem}")]);
         var physics = geometry.Physics with { GfxObjId = cell.Id };
         var diagnostics = physics.Diagnostics.Select(d => new Diagnostic(ExportDiagnosticCodes.BspGeometry, d)).ToList();
         if (!(float.IsFinite(cell.Position.Position.X) && float.IsFinite(cell.Position.Position.Y) && float.IsFinite(cell.Position.Position.Z)) || !float.IsFinite(cell.Position.Rotation.Length()) || cell.Position.Rotation.Length() < 1e-6f)
         {
             diagnostics.Add(new Diagnostic(ExportDiagnosticCodes.Unresolved, $"EnvCell {JsonIds.Format(cell.Id)}: its frame is not finite or has no rotation; nothing of it is asked"));
-            return new CellCompilation(cell, physics, null, frame, [], Bounds.Empty, diagnostics);
+            return new CellCompilation(cell, physics, null, frame, ProbeSpheres.Empty, Bounds.Empty, diagnostics);
         }
         var bsp = CompiledBsp.Compile(physics);
         var bounds = bsp.Polygons.SelectMany(p => p.Vertices).Aggregate(Bounds.Empty, (b, v) => b.Include(v));
         Probe[] probes = bsp.Polygons.Length == 0 ? []
             : [.. ProbeGrid.Build(bounds, chart).Probes, .. StabilityProbes.Build(bsp, new PartPose(Vector3.Zero, Quaternion.Identity, 1f), chart)];
-        return new CellCompilation(cell, physics, bsp, frame, probes, bounds, diagnostics);
+        return new CellCompilation(cell, physics, bsp, frame, new ProbeSpheres(probes), bounds, diagnostics);
     }
 
     public static ObjectCompilation CompileOne(SceneObjectKind kind, uint id, ChartSubjects subjects, SceneCompileOptions options, IQueryTimer timer)
@@ -117,7 +117,6 @@ internal static class SceneCompiler
         var costs = prepared.Select(m => QueryCost.PerQuery(m.Shapes, probes, chart.TimingProbes)).ToArray();
         var candidates = new List<CandidateOutcome>();
         var chosen = retailIndex;
-        var chosenAnswers = expected;
         ObjectWalks? walks = null;
         foreach (var m in ModelLadder.ByCost(costs))
         {
@@ -141,12 +140,12 @@ internal static class SceneCompiler
             candidates.Add(new CandidateOutcome(ladder[m].Name, prepared[m].Shapes.Count, falsePass, falseBlock, accepted, costs[m]) { Movement = movement });
             if (!accepted) continue;
             chosen = m;
-            chosenAnswers = answers;
             break;
         }
         var retailTiming = timer.Measure(ModelLadder.Retail, retail, probes, chart);
         var chosenTiming = chosen == retailIndex ? retailTiming : timer.Measure(ladder[chosen].Name, prepared[chosen], probes, chart);
-        return new ObjectCompilation(subject.Setup.Id, kind, ladder[chosen].Name, prepared[chosen], retail, probes, expected, chosenAnswers,
+        // Kept compactly, not as laid: held until the scene is written, the laid probes were its largest part.
+        return new ObjectCompilation(subject.Setup.Id, kind, ladder[chosen].Name, prepared[chosen], retail, new ProbeSpheres(probes),
             candidates, chosenTiming, retailTiming, laid.Bounds, [.. retail.Diagnostics, .. chosen == retailIndex ? [] : prepared[chosen].Diagnostics])
         {
             ChosenOps = costs[chosen],
@@ -155,7 +154,7 @@ internal static class SceneCompiler
     }
 
     private static ObjectCompilation Unresolved(SceneObjectKind kind, uint id, string? model, IReadOnlyList<Diagnostic> diagnostics) =>
-        new(id, kind, model, null, null, [], [], [], [], TimingStats.Of([]), TimingStats.Of([]), Bounds.Empty, diagnostics);
+        new(id, kind, model, null, null, ProbeSpheres.Empty, [], TimingStats.Of([]), TimingStats.Of([]), Bounds.Empty, diagnostics);
 
     /// <summary>
     /// The scene asked as a whole at every placed object's and every cell's probes, all-retail against
@@ -171,7 +170,7 @@ internal static class SceneCompiler
     {
         var retail = Query(placed, compiled, cells, c => c.Retail);
         var chosen = Query(placed, compiled, cells, c => c.Chosen);
-        var segments = new List<(Probe[], PartPose)>();
+        var segments = new List<(IReadOnlyList<Probe>, PartPose)>();
         foreach (var p in placed)
         {
             if (compiled.GetValueOrDefault((p.Object.Kind, p.Object.Id)) is not { } c) continue;

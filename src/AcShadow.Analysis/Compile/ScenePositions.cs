@@ -12,20 +12,20 @@ namespace AcShadow.Analysis.Compile;
 /// </summary>
 internal sealed class ScenePositions : IReadOnlyList<Probe>
 {
-    private readonly (Probe[] Probes, PartPose Frame)[] _segments;
+    private readonly (IReadOnlyList<Probe> Probes, PartPose Frame)[] _segments;
 
     /// <summary>The index of each segment's first position.</summary>
     private readonly int[] _starts;
 
-    public ScenePositions(IReadOnlyList<(Probe[] Probes, PartPose Frame)> segments)
+    public ScenePositions(IReadOnlyList<(IReadOnlyList<Probe> Probes, PartPose Frame)> segments)
     {
-        _segments = [.. segments.Where(s => s.Probes.Length > 0)];
+        _segments = [.. segments.Where(s => s.Probes.Count > 0)];
         _starts = new int[_segments.Length];
         var count = 0L;
         for (var i = 0; i < _segments.Length; i++)
         {
             _starts[i] = (int)count;
-            count += _segments[i].Probes.Length;
+            count += _segments[i].Probes.Count;
         }
         Count = count <= int.MaxValue ? (int)count : throw new ArgumentException($"{count} positions: more than one list can index", nameof(segments));
     }
@@ -49,8 +49,8 @@ internal sealed class ScenePositions : IReadOnlyList<Probe>
     public IEnumerator<Probe> GetEnumerator()
     {
         foreach (var (probes, frame) in _segments)
-            foreach (var probe in probes)
-                yield return Moved(probe, frame);
+            for (var i = 0; i < probes.Count; i++)
+                yield return Moved(probes[i], frame);
     }
 
     IEnumerator IEnumerable.GetEnumerator() => GetEnumerator();

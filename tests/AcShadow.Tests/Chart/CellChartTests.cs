@@ -30,7 +30,7 @@ public class CellChartTests
 
         // A face probe just inside a wall's reach blocks, its twin just outside does not, and the blocked one
         // touches one of the cell's own polygons: the answer is the wall's.
-        var faces = Enumerable.Range(0, chart.Cell.Probes.Length).Where(i => chart.Cell.Probes[i].Kind == ProbeKind.Face).ToArray();
+        var faces = Enumerable.Range(0, chart.Cell.Probes.Count).Where(i => chart.Cell.Probes[i].Kind == ProbeKind.Face).ToArray();
         var blocked = faces.Where(i => chart.Answers[i]).ToArray();
         Assert.NotEmpty(blocked);
         Assert.Contains(faces, i => !chart.Answers[i]);
@@ -38,11 +38,11 @@ public class CellChartTests
 
         // Answered as the scene asks a cell: moved into the landblock, then through the cell's frame.
         var query = new CellOverlapQuery(chart.Cell.Physics!, cell.Position.Position, cell.Position.Rotation);
-        for (var i = 0; i < chart.Cell.Probes.Length; i += 97)
+        for (var i = 0; i < chart.Cell.Probes.Count; i += 97)
             Assert.Equal(query.Overlaps(chart.Cell.Frame.ToEntity(chart.Cell.Probes[i].Center), chart.Cell.Probes[i].Radius), chart.Answers[i]);
 
         var csv = CellsCsv.Write([chart]).Split('\n');
         Assert.StartsWith("0xA9B40100,", csv[1]);
-        Assert.Contains(",retail," + chart.Cell.Probes.Length.ToString(System.Globalization.CultureInfo.InvariantCulture) + ",", csv[1]);
+        Assert.Contains(",retail," + chart.Cell.Probes.Count.ToString(System.Globalization.CultureInfo.InvariantCulture) + ",", csv[1]);
     }
 }

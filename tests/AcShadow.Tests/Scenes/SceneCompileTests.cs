@@ -109,7 +109,7 @@ public class SceneCompileTests
     public void A_tolerance_admits_false_blocks_but_never_a_false_pass()
     {
         var report = Compile(new SceneCompileOptions { TolerancePercent = 100 });
-        foreach (var c in report.Compiled.Values.Where(c => c.Probes.Length > 0))
+        foreach (var c in report.Compiled.Values.Where(c => c.Probes.Count > 0))
         {
             Assert.Equal(0, c.FalsePass);
             Assert.All(c.Candidates.Where(k => k.FalsePass > 0), k => Assert.False(k.Accepted));

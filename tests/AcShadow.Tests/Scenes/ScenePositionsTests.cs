@@ -20,7 +20,7 @@ public sealed class ScenePositionsTests
     [Fact]
     public void Every_position_is_its_probe_moved_by_its_segments_frame_in_order()
     {
-        (Probe[] Probes, PartPose Frame)[] segments = [(Probes(3, 0f), Turned), ([], Moved), (Probes(1, 5f), Moved), (Probes(4, -2f), Turned)];
+        (IReadOnlyList<Probe> Probes, PartPose Frame)[] segments = [(Probes(3, 0f), Turned), ([], Moved), (Probes(1, 5f), Moved), (Probes(4, -2f), Turned)];
         var expected = segments.SelectMany(s => s.Probes.Select(p => p with { Center = s.Frame.ToEntity(p.Center) })).ToArray();
 
         var positions = new ScenePositions(segments);

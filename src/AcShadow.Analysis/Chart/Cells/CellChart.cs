@@ -23,7 +23,7 @@ internal sealed record CellChart(CellCompilation Cell, bool[] Answers, TimingSta
     public static CellChart Of(EnvCell cell, CellStructures structures, ChartOptions options, IQueryTimer timer)
     {
         var compiled = SceneCompiler.CompileCell(cell, structures, options);
-        if (compiled.Bsp is null || compiled.Probes.Length == 0) return new CellChart(compiled, [], TimingStats.Of([]));
+        if (compiled.Bsp is null || compiled.Probes.Count == 0) return new CellChart(compiled, [], TimingStats.Of([]));
         var query = new PreparedModel(new CellOverlapQuery(compiled.Physics!, cell.Position.Position, cell.Position.Rotation), [], []);
         var positions = compiled.Probes.Select(p => p with { Center = compiled.Frame.ToEntity(p.Center) }).ToArray();
         return new CellChart(compiled, ChartRunner.Answers(query, positions), timer.Measure("cell: retail", query, positions, options));
