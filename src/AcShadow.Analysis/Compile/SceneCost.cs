@@ -38,7 +38,7 @@ internal static class SceneCost
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)]))).ToArray();
         var query = SceneCompiler.Query(placed, compiled, cells, pick);
         var partition = query.Partition;
-        CellReach[] cellReach = [.. query.Cells.Select(c => CellReach.Of(c.Query.Bound))];
+        CellReach[] cellReach = [.. query.CellReaches];
         var n = Math.Min(sample, positions.Count);
         long total = 0;
         for (var i = 0; i < n; i++)

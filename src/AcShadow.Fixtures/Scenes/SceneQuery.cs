@@ -33,6 +33,9 @@ internal sealed class SceneQuery : ISphereOverlap
 
     public IReadOnlyList<SceneCell> Cells => _cells;
 
+    /// <summary>Each cell's broad phase in the landblock's frame, in <see cref="Cells"/> order.</summary>
+    public IReadOnlyList<CellReach> CellReaches => _cellReach;
+
     /// <summary>The land cells the objects (entries 0..n-1) and then the cells (entries n..) are registered in.</summary>
     public LandCellPartition Partition { get; }
 
