@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs the benchmark harness (tools/AcShadow.Bench, `harness`): forges the scale dat, its quarter-size twin and
 # the 3,000-Setup scaling dat (cached in .bench-cache/ by their parameters), measures the floor, batch at one
-# job and at all cores, --incremental, doctor, dump against --version (the published binary, and the tool as
-# `dotnet tool install` puts it on the PATH: packed by scripts/pack-tool.sh, installed into artifacts/bench/tool),
+# job and at all cores, --incremental, doctor, dump against --version (the tool as `dotnet tool install` puts it on
+# the PATH: packed by scripts/pack-tool.sh, installed into artifacts/bench/tool; by its own path and by the link),
 # scene and chart of the busy landblock, a landblock batch with and without its indoor cells and the collision
 # reference, writes bench.json and prints the table with the run's conditions (cores, load average at the start
 # and the end). Extra arguments go to the harness: --small (CI size), --setups N,
@@ -16,30 +16,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
-cli_dir="$root/artifacts/bench/cli"
-rm -rf "$cli_dir"
-
-# The CLI as a user would ship it (README: Install, "a native binary"): Native AOT when the ILCompiler
-# packages restore, else self-contained composite ReadyToRun, else the plain Release build.
-rid=$(dotnet --info | awk '/^ *RID:/ {print $2; exit}')
-if [ -n "$rid" ] && dotnet publish src/AcShadow.Cli -c Release -r "$rid" -p:PublishAot=true -o "$cli_dir" -v quiet -nologo; then
-    echo "bench: measuring the Native AOT publish of acshadow ($rid)"
-elif [ -n "$rid" ] && dotnet publish src/AcShadow.Cli -c Release -r "$rid" -p:SelfContained=true -p:PublishReadyToRun=true -p:PublishReadyToRunComposite=true -o "$cli_dir" -v quiet -nologo; then
-    echo "bench: Native AOT unavailable; measuring the self-contained composite ReadyToRun publish of acshadow ($rid)"
-else
-    echo "bench: ahead-of-time publishes unavailable; measuring the plain Release build"
-    dotnet publish src/AcShadow.Cli -c Release -o "$cli_dir" -v quiet -nologo
-fi
-
-# The tool as users install it (README: Install): packed into a feed and installed into a folder of its own,
-# from a package cache of its own so no earlier package of the same version stands in for this one.
+# The tool as users install it (README: Install): packed into a feed (Native AOT where the ILCompiler packages
+# restore and a C toolchain runs, else ReadyToRun: scripts/pack-tool.sh says which) and installed into a folder
+# of its own, from a package cache of its own so no earlier package of the same version stands in for this one.
+# The binary it links onto the PATH is also the one the harness runs as "the CLI": one ahead-of-time compile.
 feed="$root/artifacts/bench/feed" tool_dir="$root/artifacts/bench/tool" packages="$root/artifacts/bench/packages"
-rm -rf "$feed" "$tool_dir" "$packages"
+rm -rf "$feed" "$tool_dir" "$packages" "$root/artifacts/bench/cli"
 scripts/pack-tool.sh "$feed"
 NUGET_PACKAGES="$packages" dotnet tool install acshadow --tool-path "$tool_dir" --add-source "$feed" >/dev/null
-echo "bench: dotnet tool install put $(file -b "$(readlink -f "$tool_dir/acshadow")" | cut -d, -f1-2) on the PATH ($tool_dir/acshadow)"
+cli="$(readlink -f "$tool_dir/acshadow")"
+echo "bench: dotnet tool install put $(file -b "$cli" | cut -d, -f1-2) on the PATH ($tool_dir/acshadow); measuring it as the CLI too"
 
 dotnet build tools/AcShadow.Bench -c Release -v quiet -nologo
 
 exec dotnet tools/AcShadow.Bench/bin/Release/net10.0/AcShadow.Bench.dll harness \
-    --cli "$cli_dir/acshadow" --installed "$tool_dir/acshadow" --cache "$root/.bench-cache" --out "$root/bench.json" "$@"
+    --cli "$cli" --installed "$tool_dir/acshadow" --cache "$root/.bench-cache" --out "$root/bench.json" "$@"
