@@ -76,9 +76,17 @@ public sealed class DatArchive : IDisposable
     /// <summary>The id's entry; reads the directory nodes on its path that no lookup has read yet.</summary>
     public bool TryGetEntry(uint id, out DatDirectoryEntry entry) => _directory.TryFind(id, out entry);
 
+    private string NodeChain(int offset) => $"{Name}: B-tree node 0x{offset:X8}'s block chain";
+
+    /// <summary>What reading the node at <paramref name="offset"/> would refuse first when it starts outside the file; null when inside.</summary>
+    internal DatFormatException? NodeOutsideTheFile(int offset) => OutsideTheFile(offset, NodeChain(offset));
+
+    private DatFormatException? OutsideTheFile(int block, string what) =>
+        block <= 0 || block + 4L > Length ? new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file") : null;
+
     private DatBTreeNode ReadNode(int offset)
     {
-        var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
+        var bytes = ReadChain(offset, DatBTreeNode.ByteSize, NodeChain(offset));
         return DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
     }
 
@@ -167,8 +175,7 @@ public sealed class DatArchive : IDisposable
             var runLength = 0;
             while (filled < size)
             {
-                if (block <= 0 || block + 4L > Length)
-                    throw new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file");
+                if (OutsideTheFile(block, what) is { } outside) throw outside;
                 if (filled > 0 && !(visited ??= [start]).Add(block))
                     throw new DatFormatException($"{what} loops back to block 0x{block:X8}");
                 var take = Math.Min(payload, size - filled);

@@ -76,6 +76,7 @@ public sealed class DatDirectory
         uint? lower = null, upper = null;
         // Checked on every lookup, not once: a few dozen comparisons per node, against a read of the file.
         CheckOrder(offset, node, lower, upper);
+        CheckBranches(offset, node, path[..1]);
         for (var depth = 0; ; depth++)
         {
             var at = Search(node.Entries, id);
@@ -86,15 +87,15 @@ public sealed class DatDirectory
             }
             if (node.IsLeaf) return false;
             var slot = ~at;
-            var child = Branch(offset, node, slot);
+            var child = node.Branches[slot];
             if (depth + 1 > MaxDepth) throw Deeper();
-            if (path[..(depth + 1)].Contains(child) || TwiceIn(node.Branches, child)) throw ReachableTwice(child);
             if (slot > 0) lower = node.Entries[slot - 1].Id;
             if (slot < node.Entries.Count) upper = node.Entries[slot].Id;
             node = Node(child);
-            CheckOrder(child, node, lower, upper);
             offset = child;
             path[depth + 1] = child;
+            CheckOrder(offset, node, lower, upper);
+            CheckBranches(offset, node, path[..(depth + 2)]);
         }
     }
 
@@ -112,7 +113,7 @@ public sealed class DatDirectory
         return ~low;
     }
 
-    /// <summary>The branch to follow; a "no branch" among those an internal node needs is damage (checked as it is followed, as the walk always has).</summary>
+    /// <summary>A branch an internal node needs; "no branch" there is damage.</summary>
     private int Branch(int offset, DatBTreeNode node, int slot)
     {
         var branch = node.Branches[slot];
@@ -121,12 +122,22 @@ public sealed class DatDirectory
             : branch;
     }
 
-    private static bool TwiceIn(IReadOnlyList<int> branches, int child)
+    /// <summary>
+    /// Every branch of a node a lookup read, in the walk's order, for what the walk would refuse at this node
+    /// without reading further: a "no branch" where one is needed, a branch outside the file, one back onto the
+    /// path (the node itself or above it) or equal to an earlier branch of the node (reachable twice). So a
+    /// lookup and a listing name the same damage in a node both read, not the first each happens to follow.
+    /// </summary>
+    private void CheckBranches(int offset, DatBTreeNode node, ReadOnlySpan<int> path)
     {
-        var seen = 0;
-        foreach (var b in branches)
-            if (b == child && ++seen > 1) return true;
-        return false;
+        for (var i = 0; i < node.Branches.Count; i++)
+        {
+            var branch = Branch(offset, node, i);
+            if (_archive.NodeOutsideTheFile(branch) is { } outside) throw new DatDirectoryException(_archive, outside.Message, outside);
+            if (path.Contains(branch)) throw ReachableTwice(branch);
+            for (var j = 0; j < i; j++)
+                if (node.Branches[j] == branch) throw ReachableTwice(branch);
+        }
     }
 
     /// <summary>A node read once: a later lookup (or the walk) through it reads nothing.</summary>
