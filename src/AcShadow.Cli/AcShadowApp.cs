@@ -67,6 +67,8 @@ public static class AcShadowApp
                 _ when OutOfMemory(e) => (ExitCodes.InternalError, "out of memory: the input asks for more than this machine has (run with --verbose and please report it)"),
                 FileNotFoundException or FileLoadException when e.Message.Contains("assembly", StringComparison.Ordinal) => (ExitCodes.InternalError, Describe(e)),
                 IOException when DescriptorsExhausted(e) => (ExitCodes.InternalError, Describe(e)),
+                // Directory damage a lookup met after the dat opened: the line the dat would have been refused with at open.
+                DatDirectoryException d => (ExitCodes.DatUnreadable, DatLocator.Describe(d)),
                 DatFormatException d => (ExitCodes.DatUnreadable, d.Message.StartsWith("corrupt dat", StringComparison.Ordinal) ? d.Message : $"corrupt dat: {d.Message}"),
                 // Output writes and the --setups file are wrapped where they happen, so a bare I/O error is the dat's.
                 IOException io => (ExitCodes.DatUnreadable, $"reading the dat failed: {io.Message} (is the file on a failing disk, or being replaced?)"),

@@ -13,8 +13,9 @@ namespace AcShadow.Fuzz;
 /// `verify` must pass: a re-run repairs any damaged file (reuse checks content, not size).
 /// A case fails on an undocumented exit code or an internal error (exit 1), on a corrupt-object message
 /// without "corrupt dat" and the id, on a run past the time limit, on allocating more than the memory limit,
-/// or on output that is not whole, or when the commands disagree about a dat refused at open (one damage,
-/// one answer: the portal dat a command refuses when it opens is refused by every command, with the same line).
+/// or on output that is not whole, or when the commands disagree about a refused dat (one damage, one answer:
+/// a refused portal dat is refused with the same line by every command that reads the damage; batch reads the
+/// whole directory, dump and chart the paths their lookups take).
 /// </summary>
 public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLimitBytes)
 {
@@ -139,19 +140,28 @@ public sealed class CaseRunner(string scratch, TimeSpan timeLimit, long memoryLi
     }
 
     /// <summary>
-    /// The line a command refused the portal dat with when it opened it; a second command that opens the
-    /// same dat and does not give the same line is a failure (the dat layer decides damage once).
+    /// The line a command refused the portal dat with; a second command that refuses the same dat with another
+    /// line, or opens a dat a lookup refused, is a failure (the dat layer decides damage one way). Only batch
+    /// lists ids (it walks the whole directory at open); dump and chart read the directory a path at a time,
+    /// so they may open a dat whose damage lies off their paths, which batch refuses.
     /// </summary>
     private static CaseFailure? Disagreement(Dictionary<string, string?> refusals, string command, string stderr)
     {
         if (command == "verify") return null; // its fixtures are damaged on purpose: it may stop on them first
         var line = stderr.Split('\n').FirstOrDefault(l => l.StartsWith("acshadow: --dat: ", StringComparison.Ordinal));
         refusals[command] = line;
-        var others = refusals.Where(r => r.Key != command).ToArray();
-        return others.FirstOrDefault(o => o.Value != line) is { Key: { } other } mismatch
-            ? new CaseFailure($"{other} and {command} disagree about the dat", $"{other}: {mismatch.Value ?? "(opened it)"}\n{command}: {line ?? "(opened it)"}")
-            : null;
+        foreach (var (other, otherLine) in refusals)
+        {
+            if (other == command || otherLine == line) continue;
+            if (OffItsPaths(other, otherLine, command, line) || OffItsPaths(command, line, other, otherLine)) continue;
+            return new CaseFailure($"{other} and {command} disagree about the dat", $"{other}: {otherLine ?? "(opened it)"}\n{command}: {line ?? "(opened it)"}");
+        }
+        return null;
     }
+
+    /// <summary>A lookup command opened the dat the listing command (batch) refused.</summary>
+    private static bool OffItsPaths(string lookup, string? lookupLine, string listing, string? listingLine) =>
+        lookup != "batch" && lookupLine is null && listing == "batch" && listingLine is not null;
 
     /// <summary>Why a command's exit code and stderr break the contract, or null.</summary>
     public static CaseFailure? Judge(string command, int code, string stderr)

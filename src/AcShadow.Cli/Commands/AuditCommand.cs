@@ -52,7 +52,7 @@ public static class AuditCommand
         AuditQuery query, AuditFormat format, string? output, int jobs, bool chart, Core.Shapes.ShapeBuildOptions pose)
     {
         if (output is not null) ExplicitOutputFile.Check(output, "audit.csv");
-        using var dat = DatLocator.Open(datPath, cellPath, console);
+        using var dat = DatLocator.Open(datPath, cellPath, console, wholeDirectory: true);
         if (output is not null) ExplicitOutputFile.RefuseInput(output, dat, "audit.csv");
         var plan = SelectionOptions.Plan(selection, dat);
         PoseOptions.RequireUsable(pose, dat.Portal, plan.Setups.Select(s => s.Id).ToArray());

@@ -75,7 +75,7 @@ public static class BatchCommand
     {
         var clock = Stopwatch.StartNew();
         OutputFolder.Check(outDir);
-        using var dat = DatLocator.Open(datPath, cellPath, console);
+        using var dat = DatLocator.Open(datPath, cellPath, console, wholeDirectory: true);
         var plan = SelectionOptions.Plan(selection, dat);
         PoseOptions.RequireUsable(options, dat.Portal, plan.Setups.Select(s => s.Id).ToArray());
         var movement = MoveCommand.Selection(movementIds, moverId, dat);

@@ -36,7 +36,7 @@ public static class DoctorCommand
     private static int Run(CliConsole console, string? datPath, string? cellPath, string? output, int jobs)
     {
         if (output is not null) ExplicitOutputFile.Check(output, Example);
-        using var dat = DatLocator.Open(datPath, cellPath, console);
+        using var dat = DatLocator.Open(datPath, cellPath, console, wholeDirectory: true);
         if (output is not null) ExplicitOutputFile.RefuseInput(output, dat, Example);
         var options = new DoctorOptions(jobs, ToolVersion(), PeakMemory);
         var report = DoctorRunner.Run(dat.Portal.Archive, dat.Cell?.Archive, options);

@@ -41,7 +41,7 @@ public static class VerifyCommand
     {
         var index = ReadIndex(folder);
         var recorded = index.Inputs;
-        using var dat = DatLocator.Open(datPath, cellPath, console);
+        using var dat = DatLocator.Open(datPath, cellPath, console, wholeDirectory: true);
         var selection = recorded.Selection;
         if (selection.Landblock is { } lb && dat.Cell is null)
             throw new CliException(ExitCodes.Usage, $"the fixtures hold the scene of landblock {LandblockIds.Short(lb)}: pass --cell-dat PATH (client_cell_1.dat) with --dat");

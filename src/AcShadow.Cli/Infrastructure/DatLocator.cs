@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using AcShadow.Core.Dat;
 using AcShadow.Core.Dat.Binary;
 using AcShadow.Files;
@@ -10,6 +11,8 @@ namespace AcShadow.Cli.Infrastructure;
 /// built-in forged sample, opened from memory through the same reader a retail dat goes through. The cell
 /// dat: --cell-dat, else ACSHADOW_CELL_DAT, else client_cell_1.dat in the folder --dat (or ACSHADOW_DAT)
 /// names, opened when a command first needs cells.
+/// A dat's directory is read as lookups need it; a command that lists ids (batch, audit, doctor, verify) walks
+/// it whole at open (<c>wholeDirectory</c>), so damage anywhere in it is refused before anything is written.
 /// </summary>
 public static class DatLocator
 {
@@ -18,7 +21,16 @@ public static class DatLocator
     public const string PortalFileName = "client_portal.dat";
     public const string CellFileName = "client_cell_1.dat";
 
-    public static OpenedDat Open(string? datOption, string? cellDatOption, CliConsole console)
+    /// <summary>"{source}: {file} is not a readable dat: " for each dat file opened, for a damaged directory found later.</summary>
+    private static readonly ConditionalWeakTable<DatArchive, string> Refusals = new();
+
+    /// <summary>
+    /// The line for directory damage a lookup (or a later walk) met: the same as had the dat been refused at open.
+    /// </summary>
+    public static string Describe(DatDirectoryException e) =>
+        Refusals.TryGetValue(e.Archive, out var prefix) ? prefix + e.Message : $"corrupt dat: {e.Message}";
+
+    public static OpenedDat Open(string? datOption, string? cellDatOption, CliConsole console, bool wholeDirectory = false)
     {
         var watches = new List<DatFileWatch>();
         var cellSource = cellDatOption is null ? CellEnvironmentVariable : "--cell-dat";
@@ -30,18 +42,18 @@ public static class DatLocator
             var (portalBytes, cellBytes) = SampleDats.Build();
             var samplePortal = OpenBytes(portalBytes, "sample/" + PortalFileName);
             var sampleCell = cellDatOption is null && cellBytes is not null ? OpenBytes(cellBytes, "sample/" + CellFileName) : null;
-            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, cellSource, DatFileKind.Cell, watches);
+            var cellFromOption = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, cellSource, DatFileKind.Cell, watches, wholeDirectory);
             return new OpenedDat(samplePortal, cellFromOption ?? sampleCell, "the built-in synthetic sample", true, watches);
         }
         var source = datOption is null ? EnvironmentVariable : "--dat";
-        var portal = OpenFile(portalPath, PortalFileName, source, DatFileKind.Portal, watches);
+        var portal = OpenFile(portalPath, PortalFileName, source, DatFileKind.Portal, watches, wholeDirectory);
         try
         {
-            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, cellSource, DatFileKind.Cell, watches);
+            var cell = cellDatOption is null ? null : OpenFile(cellDatOption, CellFileName, cellSource, DatFileKind.Cell, watches, wholeDirectory);
             // A folder holding both dats (the client's own folder) gives the cell dat too.
             var beside = cell is null && Directory.Exists(portalPath) && File.Exists(Path.Combine(portalPath, CellFileName)) ? portalPath : null;
             return new OpenedDat(portal, cell, portal.Archive.Name, false, watches,
-                beside is null ? null : (Path.Combine(beside, CellFileName), () => OpenFile(beside, CellFileName, source, DatFileKind.Cell, watches)));
+                beside is null ? null : (Path.Combine(beside, CellFileName), () => OpenFile(beside, CellFileName, source, DatFileKind.Cell, watches, wholeDirectory)));
         }
         catch
         {
@@ -54,7 +66,7 @@ public static class DatLocator
 
     private static DatDatabase OpenBytes(byte[] bytes, string name) => DatDatabase.Open(new MemoryStream(bytes, writable: false), name);
 
-    private static DatDatabase OpenFile(string path, string expectedName, string source, DatFileKind expectedKind, List<DatFileWatch> watches)
+    private static DatDatabase OpenFile(string path, string expectedName, string source, DatFileKind expectedKind, List<DatFileWatch> watches, bool wholeDirectory)
     {
         var file = Directory.Exists(path) ? Path.Combine(path, expectedName) : path;
         // Links are followed (a dat kept elsewhere and linked in is the common case); what they lead to is checked.
@@ -83,17 +95,31 @@ public static class DatLocator
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: cannot open {file}: {e.Message}");
         }
         DatDatabase dat;
+        var refusal = $"{source}: {file} is not a readable dat: ";
         try
         {
             dat = DatDatabase.Open(stream, Path.GetFileName(file));
         }
-        catch (DatFormatException e)
+        catch (Exception e) when (e is DatFormatException or DatDirectoryException)
         {
-            throw new CliException(ExitCodes.DatUnreadable, $"{source}: {file} is not a readable dat: {e.Message}");
+            throw new CliException(ExitCodes.DatUnreadable, refusal + e.Message);
         }
         catch (IOException e)
         {
             throw new CliException(ExitCodes.DatUnreadable, $"{source}: cannot read {file}: {e.Message}");
+        }
+        Refusals.AddOrUpdate(dat.Archive, refusal);
+        if (wholeDirectory)
+        {
+            try
+            {
+                _ = dat.Archive.Entries;
+            }
+            catch (DatDirectoryException e)
+            {
+                dat.Dispose();
+                throw new CliException(ExitCodes.DatUnreadable, refusal + e.Message);
+            }
         }
         watches.Add(new DatFileWatch(file, stream));
         // The header's data set says which database this is; a swapped pair would otherwise read as empty.

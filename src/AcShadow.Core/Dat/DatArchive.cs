@@ -10,11 +10,8 @@ namespace AcShadow.Core.Dat;
 /// with a 4-byte offset of the next block; the rest of the block is object data. One archive may be
 /// shared by many threads: a file is read with positional reads on its handle (threads read in parallel),
 /// any other stream under a lock (see <see cref="ReadAt"/>).
-/// The directory is walked and checked, every node, when the archive opens: this is the one place a
-/// damaged directory (a root that leaves the blocks unlisted, a branch reachable twice or looping back, a
-/// branch outside the file, an id listed twice) is decided, so every command that opens the dat gives the
-/// same answer for the same damage. (A lookup that searched only its own path would find the object and
-/// pass a dat a listing refuses.) The walk costs a few dozen reads on a 200 MB dat.
+/// Opening reads the header and the directory's root node; the rest of the directory is read as lookups
+/// need it, or walked whole when something lists it (<see cref="DatDirectory"/>).
 /// </summary>
 public sealed class DatArchive : IDisposable
 {
@@ -28,17 +25,20 @@ public sealed class DatArchive : IDisposable
     private readonly SafeFileHandle? _file;
     private readonly bool _ownsStream;
     private readonly object _gate = new();
-    private readonly DirectoryIndex _directory;
+    private readonly DatDirectory _directory;
 
     public string Name { get; }
     public DatHeader Header { get; }
     public long Length { get; }
 
-    /// <summary>All directory entries, sorted by id.</summary>
+    /// <summary>All directory entries, sorted by id (the first call walks the whole directory).</summary>
     public IReadOnlyList<DatDirectoryEntry> Entries => _directory.Entries;
 
-    /// <summary>How the directory B-tree is built: nodes, levels, and which tool's branch fill it carries.</summary>
+    /// <summary>How the directory B-tree is built: nodes, levels, and which tool's branch fill it carries (walks it).</summary>
     public DatDirectoryShape DirectoryShape => _directory.Shape;
+
+    /// <summary>The directory, read as lookups need it.</summary>
+    public DatDirectory Directory => _directory;
 
     private DatArchive(Stream stream, bool ownsStream, string name)
     {
@@ -51,15 +51,7 @@ public sealed class DatArchive : IDisposable
             throw new DatFormatException($"{name}: {Length} bytes is too short for a dat header ({DatHeader.Size} bytes)");
         var headerBytes = ReadRaw(0, DatHeader.Size);
         Header = DatHeader.Read(new DatBinaryReader(headerBytes, $"{name} header"));
-        _directory = ReadDirectory();
-    }
-
-    /// <summary>Every entry, sorted by id, and the ids alone in the same order (searched by halves).</summary>
-    private sealed class DirectoryIndex(DatDirectoryEntry[] entries, DatDirectoryShape shape)
-    {
-        public DatDirectoryEntry[] Entries { get; } = entries;
-        public DatDirectoryShape Shape { get; } = shape;
-        public uint[] Ids { get; } = Array.ConvertAll(entries, e => e.Id);
+        _directory = new DatDirectory(this, ReadNode);
     }
 
     /// <summary>Opens a dat from a readable, seekable stream.</summary>
@@ -81,18 +73,20 @@ public sealed class DatArchive : IDisposable
 
     public bool Contains(uint id) => TryGetEntry(id, out _);
 
-    public bool TryGetEntry(uint id, out DatDirectoryEntry entry)
-    {
-        var i = Array.BinarySearch(_directory.Ids, id);
-        entry = i >= 0 ? _directory.Entries[i] : default;
-        return i >= 0;
-    }
+    /// <summary>The id's entry; reads the directory nodes on its path that no lookup has read yet.</summary>
+    public bool TryGetEntry(uint id, out DatDirectoryEntry entry) => _directory.TryFind(id, out entry);
 
-    private const int MaxDepth = 32;
+    private string NodeChain(int offset) => $"{Name}: B-tree node 0x{offset:X8}'s block chain";
+
+    /// <summary>What reading the node at <paramref name="offset"/> would refuse first when it starts outside the file; null when inside.</summary>
+    internal DatFormatException? NodeOutsideTheFile(int offset) => OutsideTheFile(offset, NodeChain(offset));
+
+    private DatFormatException? OutsideTheFile(int block, string what) =>
+        block <= 0 || block + 4L > Length ? new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file") : null;
 
     private DatBTreeNode ReadNode(int offset)
     {
-        var bytes = ReadChain(offset, DatBTreeNode.ByteSize, $"{Name}: B-tree node 0x{offset:X8}'s block chain");
+        var bytes = ReadChain(offset, DatBTreeNode.ByteSize, NodeChain(offset));
         return DatBTreeNode.Read(new DatBinaryReader(bytes, $"{Name} B-tree node 0x{offset:X8}"), offset);
     }
 
@@ -145,53 +139,14 @@ public sealed class DatArchive : IDisposable
 
     /// <summary>
     /// What reading damaged bytes can throw (bounds, overflow, end of stream, allocation, bad arguments);
-    /// not cancellation, which is the caller's, nor thread aborts.
+    /// not cancellation, which is the caller's, nor thread aborts, nor a damaged directory, which is the
+    /// whole dat's and must not be reported as the object a lookup was for.
     /// </summary>
     public static bool IsReadFailure(Exception e) =>
-        e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException);
+        e is not (OperationCanceledException or ThreadInterruptedException or StackOverflowException or DatDirectoryException);
 
     /// <summary>The largest per-entry iteration: the closest thing a dat has to a single version number.</summary>
-    public int MaxIteration => _directory.Entries.Length == 0 ? 0 : Entries.Max(e => e.Iteration);
-
-    private DirectoryIndex ReadDirectory()
-    {
-        var result = new List<DatDirectoryEntry>();
-        if (Header.RootBlock == 0)
-        {
-            // Root 0 is an empty dat, which holds no blocks beyond the header's and the free list's; a
-            // dat with more has lost its root (a damaged header), and listing nothing would pass it as empty.
-            var firstBlock = (DatHeader.Size + (long)Header.BlockSize - 1) / Header.BlockSize * Header.BlockSize;
-            var unlisted = Length - firstBlock - Math.Max(0L, Header.FreeBlockCount) * Header.BlockSize;
-            if (unlisted > 0)
-                throw new DatFormatException($"{Name}: the header's directory root is 0 (an empty dat), but the file holds {unlisted} more bytes of blocks: the header is damaged");
-            return new DirectoryIndex([], new DatDirectoryShape(0, 0, BranchFill.None));
-        }
-        var visited = new HashSet<int>();
-        int levels = 0;
-        var fill = BranchFill.None;
-        Walk(Header.RootBlock, 0);
-        result.Sort((a, b) => a.Id.CompareTo(b.Id));
-        for (var i = 1; i < result.Count; i++)
-            if (result[i].Id == result[i - 1].Id)
-                throw new DatFormatException($"{Name}: the directory lists id 0x{result[i].Id:X8} twice");
-        return new DirectoryIndex(result.ToArray(), new DatDirectoryShape(visited.Count, levels, fill));
-
-        void Walk(int offset, int depth)
-        {
-            if (depth > MaxDepth) throw new DatFormatException($"{Name}: B-tree deeper than {MaxDepth} levels (cycle?)");
-            if (!visited.Add(offset)) throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} is reachable twice");
-            var node = ReadNode(offset);
-            levels = Math.Max(levels, depth + 1);
-            fill = fill.Combine(node.Fill);
-            result.AddRange(node.Entries);
-            for (var i = 0; i < node.Branches.Count; i++)
-            {
-                if (BranchFills.IsNoBranch(node.Branches[i]))
-                    throw new DatFormatException($"{Name}: B-tree node 0x{offset:X8} has no branch {i} (0x{node.Branches[i]:X8}) though it is not a leaf");
-                Walk(node.Branches[i], depth + 1);
-            }
-        }
-    }
+    public int MaxIteration => Entries.Count == 0 ? 0 : Entries.Max(e => e.Iteration);
 
     /// <summary>
     /// Follows a block chain for <paramref name="size"/> bytes. A chain visits each block at most once (a
@@ -220,8 +175,7 @@ public sealed class DatArchive : IDisposable
             var runLength = 0;
             while (filled < size)
             {
-                if (block <= 0 || block + 4L > Length)
-                    throw new DatFormatException($"{what} points at 0x{block:X8}, outside the {Length}-byte file");
+                if (OutsideTheFile(block, what) is { } outside) throw outside;
                 if (filled > 0 && !(visited ??= [start]).Add(block))
                     throw new DatFormatException($"{what} loops back to block 0x{block:X8}");
                 var take = Math.Min(payload, size - filled);

@@ -104,18 +104,19 @@ public class BranchFillTests
         var root = Root(dat);
         BinaryPrimitives.WriteInt32LittleEndian(dat.AsSpan(SlotAt(root, 1)), damaged);
 
-        // Refused when the root is read (a "no branch" where one is needed), or by the walk, or by a lookup
-        // under branch 1 (a pointer outside the file).
-        Assert.Throws<DatFormatException>(() =>
+        // Refused by the walk, and by a lookup under branch 1 (a "no branch" where one is needed, or a pointer
+        // outside the file), with the same line.
+        var walk = Assert.Throws<DatDirectoryException>(() =>
         {
             using var walked = Open(dat);
             return walked.Entries;
         });
-        Assert.Throws<DatFormatException>(() =>
+        var lookup = Assert.Throws<DatDirectoryException>(() =>
         {
             using var searched = Open(dat);
-            return Objects(500).Keys.Select(searched.ReadObjectBytes).ToArray();
+            return Objects(500).Keys.Order().Select(searched.ReadObjectBytes).ToArray();
         });
+        Assert.Equal(walk.Message, lookup.Message);
     }
 }
 

@@ -71,11 +71,13 @@ public class DatArchiveTests
     {
         var bytes = DatArchiveWriter.Write(Objects(200, 5, 4000), new DatArchiveWriter.Options(DatFileKind.Portal));
         var truncated = bytes.AsSpan(0, bytes.Length / 2).ToArray();
-        Assert.Throws<DatFormatException>(() =>
+        // The directory (read at open, or as the walk reaches it) or an object, whichever the cut reaches first.
+        var refused = Record.Exception(() =>
         {
             using var archive = DatArchive.Open(new MemoryStream(truncated), "truncated.dat");
             foreach (var e in archive.Entries) archive.ReadObjectBytes(e.Id);
         });
+        Assert.True(refused is DatFormatException or DatDirectoryException, refused?.ToString() ?? "not refused");
     }
 
     [Theory]

@@ -73,15 +73,18 @@ public class CorruptDatTests
     }
 
     [Fact]
-    public void A_b_tree_whose_branch_points_back_at_its_root_is_refused_when_the_dat_opens()
+    public void A_b_tree_whose_branch_points_back_at_its_root_is_refused_by_the_walk_and_by_any_lookup()
     {
         var (dat, _) = OneSetupDat();
         var root = BinaryPrimitives.ReadInt32LittleEndian(dat.AsSpan(0x160));
         BinaryPrimitives.WriteInt32LittleEndian(dat.AsSpan(root + 4), root); // branch 0 → the root itself
-        // The whole directory is checked node by node at open, whatever the command then asks for (a lookup
-        // that only searched its own path once found the Setup and passed a dat a listing refused).
-        var e = Assert.Throws<DatFormatException>(() => Open(dat));
-        Assert.Equal("client_portal.dat: B-tree node 0x" + root.ToString("X8") + " is reachable twice", e.Message);
+        var expected = "client_portal.dat: B-tree node 0x" + root.ToString("X8") + " is reachable twice";
+        using var db = Open(dat);
+        // A listing walks the whole directory; a lookup checks every branch of each node it reads, so even the
+        // door, which sits in the root, meets the branch back onto the root.
+        Assert.Equal(expected, Assert.Throws<DatDirectoryException>(() => db.Archive.Entries).Message);
+        Assert.Equal(expected, Assert.Throws<DatDirectoryException>(() => db.ReadSetup(Door)).Message);
+        Assert.Equal(expected, Assert.Throws<DatDirectoryException>(() => db.ReadSetup(0x02000001)).Message);
     }
 
     [Fact]
