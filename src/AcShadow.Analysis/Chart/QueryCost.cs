@@ -22,7 +22,7 @@ namespace AcShadow.Analysis.Chart;
 /// sphere reaches, its bounding sphere 1 and the edge walk 1 + its edges;</item>
 /// <item>a BSP part asked through its voxel index (<see cref="BspReachGrid"/>, the compiled scene): the turn, the
 /// voxel lookup 1, the root broad phase 1 where the voxel leaves it open, then each frontier item as the walk
-/// counts it (a node's walk from there; a polygon's plane 1 and, reached, 2 + its edges).</item>
+/// counts it (a node's walk from there; a polygon's plane 1 and, reached, 2 + its edges; a guard's sphere or plane 1).</item>
 /// </list>
 /// An object's shapes are asked in order and the count stops at the first that blocks, as the query does.
 /// Counted over an evenly strided sample of the probes (the one the timer takes), averaged per query.
@@ -185,10 +185,18 @@ internal static class QueryCost
                 if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
                 if (items.IsEmpty) { blocked = true; return ops; }
             }
-            foreach (var item in items)
+            for (var i = 0; i < items.Length;)
             {
-                if (item >= 0) ops += Walk(item, local, r, reach, out blocked);
-                else ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[~item]], local, r, reach, out blocked);
+                var item = items[i++];
+                if (BspReachGrid.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
+                else if (BspReachGrid.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
+                else if (BspReachGrid.IsGuard(item, out var guard))
+                {
+                    ops++;
+                    var length = items[i++];
+                    if (!grid.Passes(guard, local)) i += length;
+                }
+                else blocked = true;
                 if (blocked) return ops;
             }
             return ops;

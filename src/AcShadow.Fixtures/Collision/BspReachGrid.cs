@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcShadow.Fixtures.Geometry;
 
 namespace AcShadow.Fixtures.Collision;
 
@@ -14,7 +15,9 @@ namespace AcShadow.Fixtures.Collision;
 /// their polygons, solid leaves without polygons): the build runs the walk's own code over a voxel's box with
 /// interval arithmetic, the box padded so every float centre that maps to the voxel lies inside it, and every
 /// comparison padded by a bound on the float rounding of the walk's evaluation. Only a decision that comes out the
-/// same for the whole padded box is taken; any other leaves its node or polygon on the frontier.</para>
+/// same for the whole padded box is taken. One that is not leaves a guard on the frontier (the node's sphere test,
+/// or its push of one child: the same float test the walk makes) over what lies behind it, or, where the centre
+/// check would depend on the centre's side, the node itself.</para>
 /// <para>Built as an octree under a coarse grid: a child box starts from its parent's frontier (a decision uniform
 /// over the parent stays so over the child), so empty space is settled in large cells and the voxel budget goes to
 /// the cells whose frontier costs most. A centre outside the grid, or a radius other than <see cref="Radius"/>, is
@@ -36,7 +39,14 @@ internal sealed class BspReachGrid
     /// <summary>A frontier cheaper than this (in nodes and polygons a walk would look at) is not split further.</summary>
     private const int SplitCost = 3;
 
+    // A frontier item: payload << 2 | tag. Node: payload node << 1 | centre check, walked from there. Polygon:
+    // payload the listed-polygon entry. Guard: payload node << 2 | kind, then the length of the block it guards,
+    // skipped when the guard fails. True: blocks.
+    private const int NodeTag = 0, PolygonTag = 1, GuardTag = 2, TrueItem = 3;
+    private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2;
+
     private readonly BspSphereQuery _tree;
+    private readonly CompiledBspNode[] _nodes;
     private readonly CompiledBspNode _root;
     private readonly float _reach;
     private readonly Vector3 _origin;
@@ -60,7 +70,8 @@ internal sealed class BspReachGrid
     private BspReachGrid(BspSphereQuery tree, float radius, Vector3 origin, float inverseFine, int top, int[] cells, int[] items)
     {
         _tree = tree;
-        _root = tree.Nodes[0];
+        _nodes = tree.Nodes.ToArray();
+        _root = _nodes[0];
         Radius = radius;
         _reach = radius - PhysicsEpsilon.Value;
         _origin = origin;
@@ -100,12 +111,55 @@ internal sealed class BspReachGrid
         var frontier = Frontier(code, out var guarded);
         if (guarded && !SphereBounds.BroadPhaseHits(_root, center, Radius)) return false;
         if (code == GuardedBlockedCode) return true;
-        foreach (var item in frontier)
+        for (var i = 0; i < frontier.Length;)
         {
-            if (item >= 0 ? _tree.WalkFrom(item >> 1, (item & 1) != 0, center, Radius, _reach) : _tree.EntryTouches(~item, center, Radius, _reach))
-                return true;
+            var item = frontier[i++];
+            switch (item & 3)
+            {
+                case NodeTag:
+                    if (_tree.WalkFrom(item >> 3, (item & 4) != 0, center, Radius, _reach)) return true;
+                    break;
+                case PolygonTag:
+                    if (_tree.EntryTouches(item >> 2, center, Radius, _reach)) return true;
+                    break;
+                case GuardTag:
+                    var length = frontier[i++];
+                    if (!Passes(item >> 2, center)) i += length;
+                    break;
+                default:
+                    return true;
+            }
         }
         return false;
+    }
+
+    /// <summary>A guard as the walk decides it at this centre: the node's sphere test, or whether it pushes that child.</summary>
+    internal bool Passes(int guard, Vector3 center)
+    {
+        ref readonly var node = ref _nodes[guard >> 2];
+        if ((guard & 3) == SphereGuard) return SphereBounds.NodeSphereHits(node, center, Radius);
+        var dist = PolygonPlane.Dot(node.Normal, center) + node.D;
+        return (guard & 3) == PushesPosGuard ? dist >= _reach || !(dist <= -_reach) : !(dist >= _reach);
+    }
+
+    internal static bool IsNodeItem(int item, out int node, out bool centreCheck)
+    {
+        node = item >> 3;
+        centreCheck = (item & 4) != 0;
+        return (item & 3) == NodeTag;
+    }
+
+    internal static bool IsPolygonItem(int item, out int entry)
+    {
+        entry = item >> 2;
+        return (item & 3) == PolygonTag;
+    }
+
+    /// <summary>A guard item: the guard to ask (<see cref="Passes"/>); the next int is the length of the block to skip when it fails.</summary>
+    internal static bool IsGuard(int item, out int guard)
+    {
+        guard = item >> 2;
+        return (item & 3) == GuardTag;
     }
 
     /// <summary>
@@ -132,8 +186,9 @@ internal sealed class BspReachGrid
     internal static bool IsOutside(int code) => code == OutsideCode;
 
     /// <summary>
-    /// A cell's frontier items (node &lt;&lt; 1 | centre check, or ~listed-polygon entry), and whether the root's broad
-    /// phase must pass first; a guarded cell without items blocks when it passes. Empty for clear and blocked cells.
+    /// A cell's frontier (nodes, polygons, guards over blocks, true: <see cref="IsNodeItem"/>, <see cref="IsPolygonItem"/>,
+    /// <see cref="IsGuard"/>; anything else blocks), and whether the root's broad phase must pass first; a guarded
+    /// cell without items blocks when it passes. Empty for clear and blocked cells.
     /// </summary>
     internal ReadOnlySpan<int> Frontier(int code, out bool guarded)
     {
@@ -256,24 +311,94 @@ internal sealed class BspReachGrid
                 if (broad == Tri.False) { _cells[cell.Slot] = ClearCode; return; }
                 guarded = broad == Tri.Mixed;
             }
-            var blocked = false;
-            if (cell.Items is null) blocked = Visit(0, true, box);
-            else
-            {
-                foreach (var item in cell.Items)
-                {
-                    if (item >= 0) blocked = Visit(item >> 1, (item & 1) != 0, box);
-                    else if (!PolygonSkipped(~item, box)) _scratch.Add(item);
-                    if (blocked) break;
-                }
-            }
+            var blocked = cell.Items is null ? Visit(0, true, box) : Replay(cell.Items, 0, cell.Items.Length, box);
             if (blocked) { _cells[cell.Slot] = guarded ? GuardedBlockedCode : BlockedCode; return; }
             if (_scratch.Count == 0) { _cells[cell.Slot] = ClearCode; return; }
             int[] items = [.. _scratch];
             _cells[cell.Slot] = FrontierBase + Store(items, guarded);
             long cost = guarded ? 1 : 0;
-            foreach (var item in items) cost += item >= 0 ? _subtreeCost[item >> 1] : 1;
+            for (var i = 0; i < items.Length; i++)
+            {
+                cost += IsNodeItem(items[i], out var node, out _) ? _subtreeCost[node] : 1;
+                if (IsGuard(items[i], out _)) i++;
+            }
             if (cell.Level < Levels && cost >= SplitCost) pending.Add(cell with { Items = items, Guarded = guarded, Cost = cost });
+        }
+
+        /// <summary>
+        /// A parent's frontier over a child's box: each node walked again as <see cref="Visit"/> walks it, each polygon
+        /// tested again, each guard decided again (a block whose guard now always passes is inlined, one that never
+        /// passes dropped). True when what is replayed blocks for every centre under the guards open around it.
+        /// </summary>
+        private bool Replay(int[] program, int from, int to, in Box box)
+        {
+            for (var i = from; i < to;)
+            {
+                var item = program[i++];
+                if (IsNodeItem(item, out var node, out var centreCheck)) { if (Visit(node, centreCheck, box)) return true; }
+                else if (IsPolygonItem(item, out var entry)) { if (!PolygonSkipped(entry, box)) _scratch.Add(item); }
+                else if (IsGuard(item, out var guard))
+                {
+                    var end = i + 1 + program[i];
+                    i++;
+                    switch (GuardOver(guard, box))
+                    {
+                        case Tri.True:
+                            if (Replay(program, i, end, box)) return true;
+                            break;
+                        case Tri.Mixed:
+                            var mark = Open(guard);
+                            Close(mark, Replay(program, i, end, box));
+                            break;
+                    }
+                    i = end;
+                }
+                else return true;
+            }
+            return false;
+        }
+
+        private Tri GuardOver(int guard, in Box box)
+        {
+            var node = _nodes[guard >> 2];
+            if ((guard & 3) == SphereGuard) return SphereHits(node.SphereCenter, node.SphereRadius, box);
+            var (atLeast, atMost) = Pushes(node, box);
+            return (guard & 3) == PushesPosGuard ? atLeast : atMost;
+        }
+
+        /// <summary>Whether the walk pushes the positive child (dist ≥ reach or not dist ≤ −reach) and the negative one (not dist ≥ reach), over the box.</summary>
+        private (Tri Pos, Tri Neg) Pushes(in CompiledBspNode node, in Box box)
+        {
+            var (min, max) = PlaneRange(node.Normal, node.D, box);
+            var positive = Compare(min, max, _reach, atLeast: true);
+            var negative = Compare(min, max, -_reach, atLeast: false);
+            return (Or(positive, Not(negative)), Not(positive));
+        }
+
+        private static Tri Not(Tri t) => t switch { Tri.True => Tri.False, Tri.False => Tri.True, _ => Tri.Mixed };
+
+        private static Tri Or(Tri a, Tri b) => a == Tri.True || b == Tri.True ? Tri.True : a == Tri.False && b == Tri.False ? Tri.False : Tri.Mixed;
+
+        /// <summary>Starts a guarded block: the guard, then its length, filled in by <see cref="Close"/>.</summary>
+        private int Open(int guard)
+        {
+            var mark = _scratch.Count;
+            _scratch.Add(guard << 2 | GuardTag);
+            _scratch.Add(0);
+            return mark;
+        }
+
+        /// <summary>Ends a guarded block: one that blocks whenever its guard passes becomes just that; an empty one is dropped.</summary>
+        private void Close(int mark, bool blocks)
+        {
+            if (blocks)
+            {
+                _scratch.RemoveRange(mark + 2, _scratch.Count - mark - 2);
+                _scratch.Add(TrueItem);
+            }
+            var length = _scratch.Count - mark - 2;
+            if (length == 0) _scratch.RemoveRange(mark, 2);
+            else _scratch[mark + 1] = length;
         }
 
         /// <summary>Frontiers repeat from voxel to voxel: each distinct one is stored once.</summary>
@@ -297,39 +422,59 @@ internal sealed class BspReachGrid
 
         /// <summary>
         /// The walk of <see cref="BspSphereQuery.Overlaps"/> below one node over a box, the same decisions in the same
-        /// order: true when it reaches a solid leaf with its centre check on for every centre (the voxel is blocked);
-        /// what it cannot decide goes to <see cref="_scratch"/>.
+        /// order: true when it reaches a solid leaf with its centre check on for every centre under the guards open
+        /// around it; what it cannot decide goes to <see cref="_scratch"/> as guards over blocks, polygons, or the
+        /// node itself where its children's centre checks would depend on the centre's side of its plane.
         /// </summary>
         private bool Visit(int index, bool centreCheck, in Box box)
         {
             var node = _nodes[index];
+            var sphere = node.IsLeaf && node.ListedPolygonCount == 0 ? Tri.False : SphereHits(node.SphereCenter, node.SphereRadius, box);
             if (node.IsLeaf)
             {
                 if (node.ListedPolygonCount == 0) return false;
                 if (centreCheck && node.Solid) return true;
-                var leafSphere = SphereHits(node.SphereCenter, node.SphereRadius, box);
-                if (leafSphere == Tri.False) return false;
-                if (leafSphere == Tri.Mixed) { _scratch.Add(index << 1 | (centreCheck ? 1 : 0)); return false; }
+                if (sphere == Tri.False) return false;
+                var leafGuard = sphere == Tri.Mixed ? Open(index << 2 | SphereGuard) : -1;
                 for (var k = 0; k < node.PolygonCount; k++)
-                    if (!PolygonSkipped(node.PolygonStart + k, box)) _scratch.Add(~(node.PolygonStart + k));
+                    if (!PolygonSkipped(node.PolygonStart + k, box)) _scratch.Add((node.PolygonStart + k) << 2 | PolygonTag);
+                if (leafGuard >= 0) Close(leafGuard, false);
                 return false;
             }
-            var sphere = SphereHits(node.SphereCenter, node.SphereRadius, box);
             if (sphere == Tri.False) return false;
             var (min, max) = PlaneRange(node.Normal, node.D, box);
             var positive = Compare(min, max, _reach, atLeast: true);
-            var negative = positive == Tri.False ? Compare(min, max, -_reach, atLeast: false) : Tri.False;
-            var belowZero = Compare(min, max, 0.0, atLeast: true) switch { Tri.True => Tri.False, Tri.False => Tri.True, _ => Tri.Mixed };
-            var undecided = sphere == Tri.Mixed || positive == Tri.Mixed || (positive == Tri.False && negative == Tri.Mixed)
-                || (positive == Tri.False && negative == Tri.False && centreCheck && belowZero == Tri.Mixed);
-            if (undecided) { _scratch.Add(index << 1 | (centreCheck ? 1 : 0)); return false; }
-            if (positive == Tri.True) return Child(node.Pos, centreCheck, box);
-            if (negative == Tri.True) return Child(node.Neg, centreCheck, box);
-            var centreBelow = belowZero == Tri.True;
-            return Child(node.Pos, centreCheck && !centreBelow, box) || Child(node.Neg, centreCheck && centreBelow, box);
+            var negative = Compare(min, max, -_reach, atLeast: false);
+            var below = Compare(min, max, 0.0, atLeast: true) switch { Tri.True => Tri.False, Tri.False => Tri.True, _ => Tri.Mixed };
+            // Guards carry the pushes; the children's centre checks must come out the same wherever they are pushed,
+            // which needs the centre's side settled when the middle band (both children) is reachable with the check on.
+            var middle = positive != Tri.True && negative != Tri.True;
+            if ((_reach <= 0 && (positive == Tri.Mixed || negative == Tri.Mixed)) || (centreCheck && middle && below == Tri.Mixed))
+            {
+                _scratch.Add((index << 1 | (centreCheck ? 1 : 0)) << 2 | NodeTag);
+                return false;
+            }
+            var pushPos = Or(positive, Not(negative));
+            var pushNeg = Not(positive);
+            var posCheck = centreCheck && (positive == Tri.True || below == Tri.False);
+            var negCheck = centreCheck && (negative == Tri.True || below == Tri.True);
+            var nodeGuard = sphere == Tri.Mixed ? Open(index << 2 | SphereGuard) : -1;
+            var blocks = Branch(pushPos, node.Pos, posCheck, index << 2 | PushesPosGuard, box)
+                || Branch(pushNeg, node.Neg, negCheck, index << 2 | PushesNegGuard, box);
+            if (nodeGuard < 0) return blocks;
+            Close(nodeGuard, blocks);
+            return false;
         }
 
-        private bool Child(int child, bool centreCheck, in Box box) => child >= 0 && Visit(child, centreCheck, box);
+        /// <summary>One child as the walk pushes it: always, never, or behind its push guard.</summary>
+        private bool Branch(Tri pushed, int child, bool centreCheck, int guard, in Box box)
+        {
+            if (pushed == Tri.False || child < 0) return false;
+            if (pushed == Tri.True) return Visit(child, centreCheck, box);
+            var mark = Open(guard);
+            Close(mark, Visit(child, centreCheck, box));
+            return false;
+        }
 
         /// <summary>True when LeafTouches rejects the entry for every centre of the box, by its plane or by its bounding sphere.</summary>
         private bool PolygonSkipped(int entry, in Box box)
