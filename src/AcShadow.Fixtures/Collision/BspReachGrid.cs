@@ -35,7 +35,7 @@ internal sealed class BspReachGrid
     /// <summary>At most this many finest voxels along an axis (the top grid then has 8).</summary>
     private const int MaxFine = 128;
     /// <summary>At most this many cell codes per grid (4 bytes each), children blocks included.</summary>
-    private const int CellBudget = 1 << 16;
+    private const int CellBudget = 1 << 12;
     /// <summary>A frontier cheaper than this (in nodes and polygons a walk would look at) is not split further.</summary>
     private const int SplitCost = 3;
 

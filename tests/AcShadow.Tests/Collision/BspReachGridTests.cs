@@ -1,4 +1,6 @@
 using System.Numerics;
+using AcShadow.Analysis.Chart;
+using AcShadow.Analysis.Chart.Models;
 using AcShadow.Analysis.Compile;
 using AcShadow.Core.Dat.Objects;
 using AcShadow.Fixtures.Bsp;
@@ -56,6 +58,28 @@ public class BspReachGridTests
         var part = CompiledBsp.Compile(CollisionCorpus.Sample.Single(d => d.GfxObjId == 0x010044B5));
         Assert.NotEmpty(part.SolidCells);
         Assert.True(BspReachGrid.Build(new BspSphereQuery(part), 0.5f)!.StateCounts().Blocked > 0, "no blocked voxel");
+    }
+
+    [Fact]
+    public void The_counted_cost_through_the_index_answers_as_the_walk_and_counts_less()
+    {
+        var report = SceneCompileTests.Exact.Value;
+        var grids = new BspReachGrids([0.5f]);
+        var door = report.Compiled.Values.Single(c => c.Id == 0x020019FF).Retail!;
+        // Indexing the door's parts builds their grids, which the counter then finds.
+        var query = Assert.IsType<ObjectOverlapQuery>(door.Query).Indexed(grids);
+        var plain = new QueryCost.Counter(door.Shapes);
+        var indexed = new QueryCost.Counter(door.Shapes, grids);
+        long plainOps = 0, indexedOps = 0;
+        foreach (var p in report.Compiled.Values.Single(c => c.Id == 0x020019FF).Probes)
+        {
+            plainOps += plain.Count(p.Center, p.Radius, out var expected);
+            indexedOps += indexed.Count(p.Center, p.Radius, out var answer);
+            Assert.Equal(expected, answer);
+            Assert.Equal(door.Overlaps(p.Center, p.Radius), answer);
+            Assert.Equal(answer, query.Overlaps(p.Center, p.Radius));
+        }
+        Assert.True(indexedOps < plainOps, $"{indexedOps} counted through the index, {plainOps} walking");
     }
 
     [Fact]
