@@ -67,12 +67,14 @@ public sealed class CompiledScene
     /// <summary>The scene a parsed file describes, its BSP dumps read by <paramref name="bspFile"/>, each once.</summary>
     internal static CompiledScene From(CompiledSceneFile file, Func<string, BspDump> bspFile)
     {
-        var trees = new Dictionary<string, ISphereOverlap>(StringComparer.Ordinal);
+        var trees = new Dictionary<string, BspSphereQuery>(StringComparer.Ordinal);
+        // Every tree asked through its per-radius grids for the scene's mover radii: the walk's answers, faster.
+        var grids = new BspReachGrids(file.MoverRadii);
         var objects = new List<CompiledObject>();
         var queries = new List<PlacedQuery>();
         foreach (var o in file.Objects)
         {
-            var shapes = o.Shapes.Select(s => Shape(s, trees, bspFile)).ToArray();
+            var shapes = o.Shapes.Select(s => Shape(s, trees, grids, bspFile)).ToArray();
             objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, new Frame(o.Position, o.Rotation)) { CellId = o.CellId });
             if (o.Bound is not { } bound) continue;
             queries.Add(new PlacedQuery(o.Index, o.Id, o.Position, o.Rotation, new AnyOverlap(shapes), bound.Center, bound.Radius));
@@ -85,7 +87,7 @@ public sealed class CompiledScene
             cells.Add(new CompiledCell(c.CellId, c.Model!, new Frame(c.Position, c.Rotation)));
             try
             {
-                cellQueries.Add(new SceneCell(c.CellId, new CellOverlapQuery(bspFile(c.File), c.Position, c.Rotation)));
+                cellQueries.Add(new SceneCell(c.CellId, new CellOverlapQuery(bspFile(c.File), c.Position, c.Rotation).Indexed(grids)));
             }
             catch (ArgumentException ex)
             {
@@ -95,17 +97,17 @@ public sealed class CompiledScene
         return new CompiledScene(file.LandblockId, file.MoverRadii, file.TolerancePercent, objects, cells, new SceneQuery(queries, cellQueries));
     }
 
-    private static ISphereOverlap Shape(CompiledSceneFile.Shape shape, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile) => shape switch
+    private static ISphereOverlap Shape(CompiledSceneFile.Shape shape, Dictionary<string, BspSphereQuery> trees, BspReachGrids grids, Func<string, BspDump> bspFile) => shape switch
     {
         CompiledSceneFile.SphereShape s => new SphereShape(s.Center, s.Radius),
         CompiledSceneFile.CylinderShape c => new CylinderShape(c.Base, c.Radius, c.Height),
         CompiledSceneFile.BoxShape b => new PosedQuery(b.Pose, new BoxSphereQuery(b.Box)),
         CompiledSceneFile.HullShape h => new PosedQuery(h.Pose, h.Hull),
-        CompiledSceneFile.BspShape t => new PosedQuery(t.Pose, Tree(t.File, trees, bspFile)),
+        CompiledSceneFile.BspShape t => new PosedQuery(t.Pose, grids.Index(Tree(t.File, trees, bspFile), t.Pose)),
         _ => throw new FormatException($"shape type \"{shape.Type}\" is not sphere, cylinder, box, hull or bsp"),
     };
 
-    private static ISphereOverlap Tree(string file, Dictionary<string, ISphereOverlap> trees, Func<string, BspDump> bspFile)
+    private static BspSphereQuery Tree(string file, Dictionary<string, BspSphereQuery> trees, Func<string, BspDump> bspFile)
     {
         if (!trees.TryGetValue(file, out var query))
             trees[file] = query = new BspSphereQuery(CompiledBsp.Compile(bspFile(file)));

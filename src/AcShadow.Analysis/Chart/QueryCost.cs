@@ -19,7 +19,10 @@ namespace AcShadow.Analysis.Chart;
 /// evaluates 1, and each face it then touch-tests 1 + its edges;</item>
 /// <item>a BSP part (<see cref="BspSphereQuery"/>): the turn, the root broad phase 1, each node visited 2
 /// (its sphere and its plane), each leaf sphere 1, each leaf polygon's plane 1 and, for a polygon the
-/// sphere reaches, its bounding sphere 1 and the edge walk 1 + its edges.</item>
+/// sphere reaches, its bounding sphere 1 and the edge walk 1 + its edges;</item>
+/// <item>a BSP part asked through its voxel index (<see cref="BspReachGrid"/>, the compiled scene): the turn, the
+/// voxel lookup 1, the root broad phase 1 where the voxel leaves it open, then each frontier item as the walk
+/// counts it (a node's walk from there; a polygon's plane 1 and, reached, 2 + its edges; a guard's sphere or plane 1).</item>
 /// </list>
 /// An object's shapes are asked in order and the count stops at the first that blocks, as the query does.
 /// Counted over an evenly strided sample of the probes (the one the timer takes), averaged per query.
@@ -43,10 +46,10 @@ internal static class QueryCost
         return (double)total / n;
     }
 
-    /// <summary>A model's shapes made ready to be counted, query after query.</summary>
-    public sealed class Counter(IReadOnlyList<PreparedShape> shapes)
+    /// <summary>A model's shapes made ready to be counted, query after query; with <paramref name="grids"/>, its trees as asked through their voxel indexes.</summary>
+    public sealed class Counter(IReadOnlyList<PreparedShape> shapes, BspReachGrids? grids = null)
     {
-        private readonly Shape[] _shapes = [.. shapes.Select(Shape.Of)];
+        private readonly Shape[] _shapes = [.. shapes.Select(s => Shape.Of(s, grids))];
 
         /// <summary>The count for one query, and whether the model blocks there.</summary>
         public int Count(Vector3 center, float radius, out bool blocked)
@@ -67,11 +70,11 @@ internal static class QueryCost
     {
         public abstract int Count(Vector3 center, float radius, out bool blocked);
 
-        public static Shape Of(PreparedShape s) => s switch
+        public static Shape Of(PreparedShape s, BspReachGrids? grids) => s switch
         {
             { Box: { } box } => new BoxShape(s.Pose, new BoxSphereQuery(box)),
             { Polytope: { } hull } => new HullShape(s.Pose, hull),
-            { Bsp: { } bsp } => new BspShape(s.Pose, bsp),
+            { Bsp: { } bsp } => new BspShape(s.Pose, bsp, grids),
             _ when s.Shape.CollisionType == CollisionType.Cylinder => new CylinderShape(s.Shape),
             _ => new SphereShape(s.Shape),
         };
@@ -149,11 +152,11 @@ internal static class QueryCost
         }
     }
 
-    private sealed class BspShape(PartPose pose, CompiledBsp bsp) : Shape
+    private sealed class BspShape(PartPose pose, CompiledBsp bsp, BspReachGrids? grids) : Shape
     {
         private readonly int[] _stack = new int[bsp.Nodes.Length * 2 + 2];
 
-        /// <summary>The walk <see cref="BspSphereQuery.Overlaps"/> takes (same pruning, same order), counted.</summary>
+        /// <summary>The walk <see cref="BspSphereQuery.Overlaps"/> takes (same pruning, same order), counted; or the voxel index's path to the same answer.</summary>
         public override int Count(Vector3 center, float radius, out bool blocked)
         {
             blocked = false;
@@ -162,10 +165,51 @@ internal static class QueryCost
             var ops = Transform + 1;
             if (nodes.Length == 0 || !Finite(local)) return ops;
             var root = nodes[0];
-            if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
             var reach = r - PhysicsEpsilon.Value;
+            if (grids?.Find(bsp, r) is { } grid && grid.Code(local) is var code && !BspReachGrid.IsOutside(code))
+                return Transform + 1 + Indexed(grid, code, root, local, r, reach, out blocked);
+            if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
+            return ops + Walk(1, local, r, reach, out blocked);
+        }
+
+        /// <summary>The frontier of the centre's voxel, counted item by item as the walk counts them.</summary>
+        private int Indexed(BspReachGrid grid, int code, in CompiledBspNode root, Vector3 local, float r, float reach, out bool blocked)
+        {
+            blocked = BspReachGrid.IsBlocked(code);
+            if (BspReachGrid.IsClear(code) || blocked) return 0;
+            var items = grid.Frontier(code, out var guarded);
+            var ops = 0;
+            if (guarded)
+            {
+                ops++;
+                if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
+                if (items.IsEmpty) { blocked = true; return ops; }
+            }
+            for (var i = 0; i < items.Length;)
+            {
+                var item = items[i++];
+                if (BspReachGrid.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
+                else if (BspReachGrid.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
+                else if (BspReachGrid.IsGuard(item, out var guard))
+                {
+                    ops++;
+                    var length = items[i++];
+                    if (!grid.Passes(guard, local)) i += length;
+                }
+                else blocked = true;
+                if (blocked) return ops;
+            }
+            return ops;
+        }
+
+        /// <summary>The walk below one entry (node &lt;&lt; 1 | centre check), counted.</summary>
+        private int Walk(int start, Vector3 local, float r, float reach, out bool blocked)
+        {
+            blocked = false;
+            var nodes = bsp.Nodes;
+            var ops = 0;
             var top = 0;
-            _stack[top++] = 1;
+            _stack[top++] = start;
             while (top > 0)
             {
                 var entry = _stack[--top];
@@ -179,11 +223,8 @@ internal static class QueryCost
                     if (!(DistanceSquared(node.SphereCenter, local) < (node.SphereRadius + r) * (node.SphereRadius + r))) continue;
                     for (var k = 0; k < node.PolygonCount; k++)
                     {
-                        var polygon = bsp.Polygons[bsp.LeafPolygons[node.PolygonStart + k]];
-                        ops++;
-                        if (MathF.Abs(polygon.Distance(local)) > reach) continue;
-                        ops += 2 + polygon.Vertices.Length;
-                        if (PolygonSphereTest.Touches(polygon, local, r)) { blocked = true; return ops; }
+                        ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[node.PolygonStart + k]], local, r, reach, out blocked);
+                        if (blocked) return ops;
                     }
                     continue;
                 }
@@ -204,6 +245,14 @@ internal static class QueryCost
                 }
             }
             return ops;
+        }
+
+        private static int PolygonCount(CompiledPolygon polygon, Vector3 local, float r, float reach, out bool blocked)
+        {
+            blocked = false;
+            if (MathF.Abs(polygon.Distance(local)) > reach) return 1;
+            blocked = PolygonSphereTest.Touches(polygon, local, r);
+            return 3 + polygon.Vertices.Length;
         }
 
         private void Push(ref int top, int child, bool centreCheck)

@@ -169,7 +169,9 @@ internal static class SceneCompiler
         IReadOnlyList<CellCompilation> cells, SceneCompileOptions options, IQueryTimer timer)
     {
         var retail = Query(placed, compiled, cells, c => c.Retail);
-        var chosen = Query(placed, compiled, cells, c => c.Chosen);
+        // The compiled scene asks every tree through its per-radius grids (BspReachGrid): retail's answers, fewer steps.
+        var grids = new BspReachGrids(options.Chart.Radii);
+        var chosen = Query(placed, compiled, cells, c => c.Chosen, grids);
         var segments = new List<(IReadOnlyList<Probe>, PartPose)>();
         foreach (var p in placed)
         {
@@ -189,7 +191,7 @@ internal static class SceneCompiler
             else falseBlock++;
         }
         var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
-        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, grids: grids);
         var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive);
         var retailModel = new PreparedModel(retail, [], []);
         var compiledModel = new PreparedModel(chosen, [], []);
@@ -219,16 +221,26 @@ internal static class SceneCompiler
     /// <summary>
     /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
     /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
-    /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
+    /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell); with <paramref name="grids"/>, every
+    /// tree asked through its <see cref="BspReachGrid"/>s, as the fixtures library's compiled scene asks it.
     /// </summary>
     internal static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, BspReachGrids? grids = null)
     {
         var objects = new List<PlacedQuery>();
+        var indexed = new Dictionary<ISphereOverlap, ISphereOverlap>(ReferenceEqualityComparer.Instance);
         foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
-            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Position, p.Object.Frame.Rotation, model.Query, center, radius));
-        var cellQueries = cells.Where(c => c.Bsp is not null)
-            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Position, c.Cell.Position.Rotation))).ToArray();
+        {
+            var query = model.Query;
+            if (grids is not null && query is ObjectOverlapQuery parts && !indexed.TryGetValue(parts, out query))
+                indexed[parts] = query = parts.Indexed(grids);
+            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Position, p.Object.Frame.Rotation, query, center, radius));
+        }
+        var cellQueries = cells.Where(c => c.Bsp is not null).Select(c =>
+        {
+            var query = new CellOverlapQuery(c.Bsp!, c.Cell.Position.Position, c.Cell.Position.Rotation);
+            return new SceneCell(c.Cell.Id, grids is null ? query : query.Indexed(grids));
+        }).ToArray();
         return new SceneQuery(objects, cellQueries);
     }
 

@@ -14,7 +14,8 @@ namespace AcShadow.Analysis.Compile;
 /// for each object it holds its bounding sphere 1 and, for a position inside it, the turn into the
 /// object's frame and its model's count; for each indoor cell registered there its root sphere in the
 /// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
-/// stopping at the first that blocks. <see cref="SceneWalk.Exhaustive"/> counts the old walk
+/// stopping at the first that blocks; given the compiled scene's grids, a tree asked through its
+/// voxel index counts as <see cref="QueryCost"/> counts an indexed tree. <see cref="SceneWalk.Exhaustive"/> counts the old walk
 /// instead: every object's bounding sphere, then every cell.
 /// </summary>
 internal static class SceneCost
@@ -26,16 +27,16 @@ internal static class SceneCost
     public const int LandCellVisit = 1;
 
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample, SceneWalk walk = SceneWalk.Partitioned)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample, SceneWalk walk = SceneWalk.Partitioned, BspReachGrids? grids = null)
     {
         if (positions.Count == 0 || sample < 1) return 0;
         var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
         {
             var frame = new PartPose(o.Placed.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(o.Placed.Object.Frame.Rotation), 1f);
-            return new ObjectCounter(frame, frame.ToEntity(o.Center), o.Radius, new QueryCost.Counter(o.Model.Shapes));
+            return new ObjectCounter(frame, frame.ToEntity(o.Center), o.Radius, new QueryCost.Counter(o.Model.Shapes, grids));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
-            .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)]))).ToArray();
+            .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)], grids))).ToArray();
         var query = SceneCompiler.Query(placed, compiled, cells, pick);
         var partition = query.Partition;
         CellReach[] cellReach = [.. query.CellReaches];

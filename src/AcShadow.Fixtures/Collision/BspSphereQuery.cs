@@ -58,12 +58,35 @@ internal sealed class BspSphereQuery : ISphereOverlap
     {
         if (!SphereBounds.IsValidProbe(center, radius) || _nodes.Length == 0) return false;
         if (!SphereBounds.BroadPhaseHits(_nodes[0], center, radius)) return false;
-        var reach = radius - PhysicsEpsilon.Value;
+        return Walk(1, center, radius, radius - PhysicsEpsilon.Value);
+    }
+
+    /// <summary>
+    /// The walk below one node entered with the centre check on or off, as <see cref="Overlaps"/> walks it there:
+    /// the answer of a reached node's subtree does not depend on the rest of the walk, which is what lets
+    /// <see cref="BspReachGrid"/> hand over only the nodes its voxel leaves undecided. No probe checks.
+    /// </summary>
+    internal bool WalkFrom(int node, bool centreCheck, Vector3 center, float radius, float reach) =>
+        Walk(node << 1 | (centreCheck ? 1 : 0), center, radius, reach);
+
+    /// <summary>One listed polygon (an index into the leaf order) as <see cref="LeafTouches"/> tests it.</summary>
+    internal bool EntryTouches(int entry, Vector3 center, float radius, float reach) => LeafTouches(entry, 1, center, radius, reach);
+
+    internal ReadOnlySpan<CompiledBspNode> Nodes => _nodes;
+
+    /// <summary>The plane <see cref="LeafTouches"/> rejects a listed polygon by, per entry.</summary>
+    internal ReadOnlySpan<Vector4> LeafPlanes => _leafPlanes;
+
+    /// <summary>The bounding sphere <see cref="LeafTouches"/> rejects a listed polygon by, per entry.</summary>
+    internal ReadOnlySpan<Vector4> LeafSpheres => _leafSpheres;
+
+    private bool Walk(int entry0, Vector3 center, float radius, float reach)
+    {
         // Entries are node << 1 | centre-check. Sized by the tree's height, not its node count, so a query
         // neither allocates nor clears a node-sized buffer.
         Span<int> stack = stackalloc int[_stackSize];
         var top = 0;
-        stack[top++] = 1;
+        stack[top++] = entry0;
         while (top > 0)
         {
             var entry = stack[--top];

@@ -16,20 +16,41 @@ internal sealed class CellOverlapQuery : ISphereOverlap
 {
     private readonly ClientFrameMatrix _frame;
     private readonly BspSphereQuery _bsp;
+    private readonly ISphereOverlap _tree;
     private readonly bool _unitRotation;
 
     /// <param name="physics">The cell structure's physics polygons and PhysicsBSP, in the cell's own frame.</param>
     /// <param name="origin">The cell's origin in the frame the queries use (landblock-relative, as the dat stores it).</param>
     /// <param name="orientation">The cell's rotation in that frame.</param>
     public CellOverlapQuery(BspDump physics, Vector3 origin, Quaternion orientation)
+        : this(CompiledBsp.Compile(physics), origin, orientation)
+    {
+    }
+
+    /// <param name="physics">The cell structure's PhysicsBSP already compiled, in the cell's own frame.</param>
+    /// <param name="origin">The cell's origin in the frame the queries use.</param>
+    /// <param name="orientation">The cell's rotation in that frame.</param>
+    internal CellOverlapQuery(CompiledBsp physics, Vector3 origin, Quaternion orientation)
     {
         var length = orientation.Length();
         if (!float.IsFinite(length) || length < 1e-6f || !Vec.IsFinite(origin))
             throw new ArgumentException($"a cell frame needs a finite origin and a non-zero rotation; got {origin}, {orientation}");
         _frame = ClientFrameMatrix.From(new Frame(origin, ClientFrameMatrix.PlacedRotation(orientation)));
-        _bsp = BspSphereQuery.From(physics);
+        _bsp = new BspSphereQuery(physics);
+        _tree = _bsp;
         _unitRotation = MathF.Abs(orientation.LengthSquared() - 1f) <= 1e-4f;
     }
+
+    private CellOverlapQuery(CellOverlapQuery cell, ISphereOverlap tree)
+    {
+        _frame = cell._frame;
+        _bsp = cell._bsp;
+        _tree = tree;
+        _unitRotation = cell._unitRotation;
+    }
+
+    /// <summary>The same cell with its tree asked through its <see cref="BspReachGrid"/>s (the radius is not scaled in a cell's frame): the same answers.</summary>
+    internal CellOverlapQuery Indexed(BspReachGrids grids) => new(this, grids.Index(_bsp, new PartPose(Vector3.Zero, Quaternion.Identity, 1f)));
 
     /// <summary>
     /// The tree's root sphere in the frame of the cell's origin, widened by 1e-3 of its reach for the rounding
@@ -52,7 +73,7 @@ internal sealed class CellOverlapQuery : ISphereOverlap
     /// <summary>Does a sphere at this centre (same frame as the cell's origin) touch one of the cell's physics polygons?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {
-        return _bsp.Overlaps(_frame.GlobalToLocal(center), radius);
+        return _tree.Overlaps(_frame.GlobalToLocal(center), radius);
     }
 
     /// <summary>A point in the cell's own frame.</summary>

@@ -65,6 +65,10 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
     public static ObjectOverlapQuery Create(ShadowShapeSet set, Func<uint, CompiledBsp?> bsps) =>
         Create(set.Shapes, bsps);
 
+    /// <summary>The same object with each part's tree asked through its <see cref="BspReachGrid"/>s for the scene's mover radii: the same answers.</summary>
+    internal ObjectOverlapQuery Indexed(BspReachGrids grids) =>
+        new([.. _checks.Select(c => c is BspCheck { Query: BspSphereQuery tree } part ? new BspCheck(part.Pose, grids.Index(tree, part.Pose)) : c)], Shapes, Diagnostics);
+
     public bool Overlaps(Vector3 center, float radius)
     {
         if (!SphereBounds.IsValidProbe(center, radius)) return false;
@@ -95,6 +99,10 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
 
     private sealed class BspCheck(PartPose pose, ISphereOverlap query) : IShapeCheck
     {
+        public PartPose Pose => pose;
+
+        public ISphereOverlap Query => query;
+
         public bool Overlaps(Vector3 center, float radius)
         {
             var (localCenter, localRadius) = pose.ToLocal(center, radius);
