@@ -169,7 +169,7 @@ internal static class SceneCompiler
         IReadOnlyList<CellCompilation> cells, SceneCompileOptions options, IQueryTimer timer)
     {
         var retail = Query(placed, compiled, cells, c => c.Retail);
-        var chosen = Query(placed, compiled, cells, c => c.Chosen);
+        var chosen = Query(placed, compiled, cells, c => c.Chosen, partsApart: true);
         var segments = new List<(IReadOnlyList<Probe>, PartPose)>();
         foreach (var p in placed)
         {
@@ -189,7 +189,7 @@ internal static class SceneCompiler
             else falseBlock++;
         }
         var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
-        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true);
         var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive);
         var retailModel = new PreparedModel(retail, [], []);
         var compiledModel = new PreparedModel(chosen, [], []);
@@ -218,19 +218,33 @@ internal static class SceneCompiler
 
     /// <summary>
     /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
-    /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
-    /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
+    /// gives behind a bounding sphere around that model's own shapes — or, <paramref name="partsApart"/> (the
+    /// compiled scene), each posed part behind its own (<see cref="PlacedParts"/>) — and every cell by its retail
+    /// tree (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell).
     /// </summary>
     internal static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart = false) =>
+        new([.. Entries(placed, compiled, pick, partsApart).Select(e => e.Entry)], CellQueries(cells));
+
+    /// <summary>The scene's object entries in order, each with the model it asks (one per object, or per part <paramref name="partsApart"/>).</summary>
+    internal static IEnumerable<(PlacedQuery Entry, PreparedModel Model)> Entries(IReadOnlyList<PlacedObject> placed,
+        IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart)
     {
-        var objects = new List<PlacedQuery>();
         foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
-            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Position, p.Object.Frame.Rotation, model.Query, center, radius));
-        var cellQueries = cells.Where(c => c.Bsp is not null)
-            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Position, c.Cell.Position.Rotation))).ToArray();
-        return new SceneQuery(objects, cellQueries);
+        {
+            var o = p.Object;
+            if (!partsApart)
+                yield return (new PlacedQuery(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, model.Query, center, radius), model);
+            else
+                foreach (var part in PlacedParts.Of(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, model.Query, center, radius))
+                    yield return (part, model);
+        }
     }
+
+    /// <summary>Every cell with a tree, as the scene asks it.</summary>
+    internal static SceneCell[] CellQueries(IReadOnlyList<CellCompilation> cells) =>
+        [.. cells.Where(c => c.Bsp is not null)
+            .Select(c => new SceneCell(c.Cell.Id, new CellOverlapQuery(c.Physics!, c.Cell.Position.Position, c.Cell.Position.Rotation)))];
 
     /// <summary>The placed objects a scene asks, in order, each with the picked model and the entity-space sphere around its shapes.</summary>
     internal static IEnumerable<(PlacedObject Placed, PreparedModel Model, Vector3 Center, float Radius)> Placements(IReadOnlyList<PlacedObject> placed,
@@ -246,8 +260,8 @@ internal static class SceneCompiler
     }
 
     /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
-    internal static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
-        Query(report.Placed, report.Compiled, report.Cells, pick);
+    internal static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart = false) =>
+        Query(report.Placed, report.Compiled, report.Cells, pick, partsApart);
 
     /// <summary>The sphere around an entity-space box, padded so rounding never lets it reject a touching sphere.</summary>
     public static (Vector3 Center, float Radius) Bound(Bounds b)

@@ -11,8 +11,9 @@ namespace AcShadow.Analysis.Compile;
 /// What asking the whole scene about one mover position costs, counted as <see cref="QueryCost"/> counts
 /// an object (one unit a distance evaluation), along the walk <see cref="SceneQuery"/> takes: the sphere's
 /// land cells found <see cref="LandCellReach"/>, their candidate list loaded <see cref="LandCellVisit"/>, then
-/// for each object it holds its bounding sphere 1 and, for a position inside it, the turn into the
-/// object's frame and its model's count; for each indoor cell registered there its root sphere in the
+/// for each object (or, the compiled scene, each part: <see cref="PlacedParts"/>) it holds its bounding sphere 1
+/// and, for a position inside it, the turn into the object's frame and its model's count (each posed part's reach
+/// in the entity frame 1 before its turn: <see cref="PartReach"/>); for each indoor cell registered there its root sphere in the
 /// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
 /// stopping at the first that blocks. <see cref="SceneWalk.Exhaustive"/> counts the old walk
 /// instead: every object's bounding sphere, then every cell.
@@ -25,18 +26,22 @@ internal static class SceneCost
     /// <summary>Loading one candidate list: a mover range's flat array, or (a mover wider than a cell) one land cell's list.</summary>
     public const int LandCellVisit = 1;
 
+    /// <summary>Counted ops per position along <paramref name="walk"/>; <paramref name="partsApart"/>: the compiled scene's walk, each posed part an entry of its own (<see cref="PlacedParts"/>).</summary>
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample, SceneWalk walk = SceneWalk.Partitioned)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample,
+        SceneWalk walk = SceneWalk.Partitioned, bool partsApart = false)
     {
         if (positions.Count == 0 || sample < 1) return 0;
-        var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
+        var entries = SceneCompiler.Entries(placed, compiled, pick, partsApart).ToArray();
+        var objects = entries.Select(e =>
         {
-            var frame = new PartPose(o.Placed.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(o.Placed.Object.Frame.Rotation), 1f);
-            return new ObjectCounter(frame, frame.ToEntity(o.Center), o.Radius, new QueryCost.Counter(o.Model.Shapes));
+            var (bound, radius) = e.Entry.LandblockBound;
+            IReadOnlyList<PreparedShape> shapes = e.Entry.Shapes is { } asked ? [.. asked.Select(i => e.Model.Shapes[i])] : e.Model.Shapes;
+            return new ObjectCounter(e.Entry.Frame, bound, radius, new QueryCost.Counter(shapes, partReach: true));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)]))).ToArray();
-        var query = SceneCompiler.Query(placed, compiled, cells, pick);
+        var query = new SceneQuery([.. entries.Select(e => e.Entry)], SceneCompiler.CellQueries(cells));
         var partition = query.Partition;
         CellReach[] cellReach = [.. query.CellReaches];
         var n = Math.Min(sample, positions.Count);

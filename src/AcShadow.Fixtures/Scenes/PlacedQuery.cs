@@ -8,7 +8,8 @@ namespace AcShadow.Fixtures.Scenes;
 /// One placed object of a scene as a query: its landblock-relative frame (the entity's position and its rotation
 /// as the client holds it, <see cref="ClientFrameMatrix.PlacedRotation"/>; the client turns the moving sphere into
 /// each object's frame), its collision in entity
-/// space, and an entity-space sphere around everything it can block, for the broad phase.
+/// space, and an entity-space sphere around everything it can block, for the broad phase. The compiled scene places
+/// each part of an object as one of these (<see cref="PlacedParts"/>), behind the part's own sphere.
 /// </summary>
 internal sealed class PlacedQuery
 {
@@ -23,7 +24,11 @@ internal sealed class PlacedQuery
     public Vector3 BoundCenter { get; }
     public float BoundRadius { get; }
 
-    public PlacedQuery(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius)
+    /// <summary>Which of the object's shapes (in its model's order) <see cref="EntityQuery"/> asks; null: all of them.</summary>
+    public IReadOnlyList<int>? Shapes { get; init; }
+
+    /// <summary>An object (or one part of it) behind an entity-space bound; <paramref name="radiusStretch"/> is the factor the bound puts on the query radius (<see cref="PartReach.Stretch"/>; 1 for a plain sphere).</summary>
+    public PlacedQuery(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius, float radiusStretch = 1f)
     {
         Index = index;
         Id = id;
@@ -37,7 +42,7 @@ internal sealed class PlacedQuery
         // much (zero for a unit quaternion) so it never refuses what the narrow phase would block.
         var q = Frame.Rotation;
         var off = 4.0 * Math.Abs(1.0 - ((double)q.W * q.W + (double)q.X * q.X + (double)q.Y * q.Y + (double)q.Z * q.Z));
-        _stretch = (float)(1.0 + off);
+        _stretch = (float)((1.0 + off) * radiusStretch);
         var fromOrigin = Math.Sqrt((double)boundCenter.X * boundCenter.X + (double)boundCenter.Y * boundCenter.Y + (double)boundCenter.Z * boundCenter.Z);
         _reach = (float)(boundRadius + off * (boundRadius + fromOrigin));
     }
