@@ -37,7 +37,7 @@ internal static class SceneCost
         {
             var (bound, radius) = e.Entry.LandblockBound;
             IReadOnlyList<PreparedShape> shapes = e.Entry.Shapes is { } asked ? [.. asked.Select(i => e.Model.Shapes[i])] : e.Model.Shapes;
-            return new ObjectCounter(e.Entry.Frame, bound, radius, new QueryCost.Counter(shapes, partReach: true));
+            return new ObjectCounter(e.Entry.Frame, e.Entry.FrameKey, bound, radius, new QueryCost.Counter(shapes, partReach: true));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)]))).ToArray();
@@ -70,12 +70,14 @@ internal static class SceneCost
         }
     }
 
-    private sealed record ObjectCounter(PartPose Frame, Vector3 Bound, float Radius, QueryCost.Counter Counter);
+    private sealed record ObjectCounter(PartPose Frame, object FrameKey, Vector3 Bound, float Radius, QueryCost.Counter Counter);
 
     /// <summary>One position's count along a walk (<paramref name="cellReach"/> null: the exhaustive walk, which turns into every cell).</summary>
     private struct Counting(ObjectCounter[] objects, (PartPose Frame, QueryCost.Counter Counter)[] cells, CellReach[]? cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
     {
         public long Ops;
+        /// <summary>The frame the sphere was last turned into: the parts of one object share the turn, as the query does.</summary>
+        private object? _frame;
 
         public bool Test(int entry)
         {
@@ -98,7 +100,9 @@ internal static class SceneCost
             float dx = center.X - o.Bound.X, dy = center.Y - o.Bound.Y, dz = center.Z - o.Bound.Z, sum = o.Radius + radius;
             if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
             var (local, r) = o.Frame.ToLocal(center, radius);
-            Ops += QueryCost.Transform + o.Counter.Count(local, r, out var blocked);
+            if (!ReferenceEquals(o.FrameKey, _frame)) Ops += QueryCost.Transform;
+            _frame = o.FrameKey;
+            Ops += o.Counter.Count(local, r, out var blocked);
             return blocked;
         }
 

@@ -17,17 +17,18 @@ internal static class PlacedParts
     public static IEnumerable<PlacedQuery> Of(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius)
     {
         var parts = PartsOf(entityQuery);
+        var frame = new object();
         var rest = new List<int>();
         for (var i = 0; i < parts.Count; i++)
         {
             if (parts[i] is PosedQuery { Reach: { IsBounded: true } reach } posed)
-                yield return new PlacedQuery(index, id, position, rotation, posed, reach.Center, reach.Radius, reach.Stretch) { Shapes = [i] };
+                yield return new PlacedQuery(index, id, position, rotation, posed, reach.Center, reach.Radius, reach.Stretch) { Shapes = [i], FrameKey = frame };
             else rest.Add(i);
         }
         if (rest.Count == parts.Count)
             yield return new PlacedQuery(index, id, position, rotation, entityQuery, boundCenter, boundRadius);
         else if (rest.Count > 0)
-            yield return new PlacedQuery(index, id, position, rotation, new AnyOverlap([.. rest.Select(i => parts[i])]), boundCenter, boundRadius) { Shapes = rest };
+            yield return new PlacedQuery(index, id, position, rotation, new AnyOverlap([.. rest.Select(i => parts[i])]), boundCenter, boundRadius) { Shapes = rest, FrameKey = frame };
     }
 
     /// <summary>An object query's shapes, one query each in shape order, or the query itself when it is not made of shapes.</summary>

@@ -16,6 +16,7 @@ internal sealed class PlacedQuery
     private readonly Vector3 _boundInLandblock;
     private readonly float _stretch;
     private readonly float _reach;
+    private readonly ClientFrameMatrix _matrix;
 
     public int Index { get; }
     public uint Id { get; }
@@ -33,6 +34,8 @@ internal sealed class PlacedQuery
         Index = index;
         Id = id;
         Frame = new PartPose(position, ClientFrameMatrix.PlacedRotation(rotation), 1f);
+        _matrix = Frame.Matrix;
+        FrameKey = this;
         EntityQuery = entityQuery;
         BoundCenter = boundCenter;
         BoundRadius = boundRadius;
@@ -50,13 +53,28 @@ internal sealed class PlacedQuery
     /// <summary>The bounding sphere in the landblock's frame, as <see cref="Overlaps"/> tests it first.</summary>
     public (Vector3 Center, float Radius) LandblockBound => (_boundInLandblock, BoundRadius);
 
+    /// <summary>
+    /// Entries that share this key stand in the same frame (the parts of one object, <see cref="PlacedParts"/>): a walk
+    /// may turn a sphere once for all of them, since the turn is the same float operations each time.
+    /// </summary>
+    public object FrameKey { get; init; }
+
     /// <summary>Does a sphere at this landblock-relative centre touch the object?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {
-        float dx = center.X - _boundInLandblock.X, dy = center.Y - _boundInLandblock.Y, dz = center.Z - _boundInLandblock.Z;
-        var sum = _reach + radius * _stretch;
-        if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
-        var (local, r) = Frame.ToLocal(center, radius);
+        if (!Near(center, radius)) return false;
+        var (local, r) = ToEntity(center, radius);
         return EntityQuery.Overlaps(local, r);
     }
+
+    /// <summary>The broad phase: is the sphere within the bound (so <see cref="EntityQuery"/> may block it)?</summary>
+    public bool Near(Vector3 center, float radius)
+    {
+        float dx = center.X - _boundInLandblock.X, dy = center.Y - _boundInLandblock.Y, dz = center.Z - _boundInLandblock.Z;
+        var sum = _reach + radius * _stretch;
+        return dx * dx + dy * dy + dz * dz <= sum * sum;
+    }
+
+    /// <summary>The sphere in the object's frame (Frame::globaltolocal with the matrix built once).</summary>
+    public (Vector3 Center, float Radius) ToEntity(Vector3 center, float radius) => Frame.ToLocal(_matrix, center, radius);
 }

@@ -53,16 +53,31 @@ internal sealed class SceneQuery : ISphereOverlap
     public IEnumerable<uint> TouchingCells(Vector3 center, float radius) =>
         _cells.Where((c, i) => Partition.Reaches(_objects.Length + i, center, radius) && c.Query.Overlaps(center, radius)).Select(c => c.CellId);
 
-    private readonly struct EntryTest(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
+    private struct EntryTest(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
     {
+        /// <summary>The last frame the sphere was turned into, and the turned sphere: an object's parts share one turn.</summary>
+        private object? _frame;
+        private Vector3 _local;
+        private float _localRadius;
+
         public bool Test(int entry)
         {
-            if (entry < objects.Length) return objects[entry].Overlaps(center, radius);
+            if (entry < objects.Length)
+            {
+                var o = objects[entry];
+                if (!o.Near(center, radius)) return false;
+                if (!ReferenceEquals(o.FrameKey, _frame))
+                {
+                    (_local, _localRadius) = o.ToEntity(center, radius);
+                    _frame = o.FrameKey;
+                }
+                return o.EntityQuery.Overlaps(_local, _localRadius);
+            }
             var cell = entry - objects.Length;
             return cellReach[cell].Reaches(center, radius) && cells[cell].Query.Overlaps(center, radius);
         }
 
-        public void Visit() { }
+        public readonly void Visit() { }
     }
 
     private sealed class ExhaustiveWalk(PlacedQuery[] objects, SceneCell[] cells) : ISphereOverlap
