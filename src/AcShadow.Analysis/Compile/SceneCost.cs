@@ -37,7 +37,8 @@ internal static class SceneCost
         {
             var (bound, radius) = e.Entry.LandblockBound;
             IReadOnlyList<PreparedShape> shapes = e.Entry.Shapes is { } asked ? [.. asked.Select(i => e.Model.Shapes[i])] : e.Model.Shapes;
-            return new ObjectCounter(e.Entry.Frame, e.Entry.FrameKey, bound, radius, new QueryCost.Counter(shapes, partReach: true));
+            // A part registered apart is asked behind its reach already (its landblock bound), not again.
+            return new ObjectCounter(e.Entry.Frame, e.Entry.FrameKey, e.Entry.Whole?.LandblockBound, bound, radius, new QueryCost.Counter(shapes, partReach: e.Entry.Shapes is null));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)]))).ToArray();
@@ -70,14 +71,16 @@ internal static class SceneCost
         }
     }
 
-    private sealed record ObjectCounter(PartPose Frame, object FrameKey, Vector3 Bound, float Radius, QueryCost.Counter Counter);
+    private sealed record ObjectCounter(PartPose Frame, object FrameKey, (Vector3 Center, float Radius)? Whole, Vector3 Bound, float Radius, QueryCost.Counter Counter);
 
     /// <summary>One position's count along a walk (<paramref name="cellReach"/> null: the exhaustive walk, which turns into every cell).</summary>
     private struct Counting(ObjectCounter[] objects, (PartPose Frame, QueryCost.Counter Counter)[] cells, CellReach[]? cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
     {
         public long Ops;
-        /// <summary>The frame the sphere was last turned into: the parts of one object share the turn, as the query does.</summary>
+        /// <summary>The frame of the last entry: the parts of one object share its whole sphere's test (0 not asked, 1 met, 2 missed) and the turn, as the query does.</summary>
         private object? _frame;
+        private int _whole;
+        private bool _turned;
 
         public bool Test(int entry)
         {
@@ -96,17 +99,32 @@ internal static class SceneCost
                 return cellBlocked;
             }
             var o = objects[entry];
+            if (!ReferenceEquals(o.FrameKey, _frame)) (_frame, _whole, _turned) = (o.FrameKey, 0, false);
+            if (o.Whole is { } whole)
+            {
+                if (_whole == 0)
+                {
+                    Ops++;
+                    _whole = Within(whole.Center, whole.Radius) ? 1 : 2;
+                }
+                if (_whole == 2) return false;
+            }
             Ops++;
-            float dx = center.X - o.Bound.X, dy = center.Y - o.Bound.Y, dz = center.Z - o.Bound.Z, sum = o.Radius + radius;
-            if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
+            if (!Within(o.Bound, o.Radius)) return false;
             var (local, r) = o.Frame.ToLocal(center, radius);
-            if (!ReferenceEquals(o.FrameKey, _frame)) Ops += QueryCost.Transform;
-            _frame = o.FrameKey;
+            if (!_turned) Ops += QueryCost.Transform;
+            _turned = true;
             Ops += o.Counter.Count(local, r, out var blocked);
             return blocked;
         }
 
         public void Visit() => Ops += LandCellVisit;
+
+        private readonly bool Within(Vector3 bound, float boundRadius)
+        {
+            float dx = center.X - bound.X, dy = center.Y - bound.Y, dz = center.Z - bound.Z, sum = boundRadius + radius;
+            return dx * dx + dy * dy + dz * dz <= sum * sum;
+        }
     }
 
     private static readonly Fixtures.Shapes.ShadowShape CellShape = new(Fixtures.Shapes.ShapeSource.Part, 0, null, Fixtures.Shapes.CollisionType.Bsp,

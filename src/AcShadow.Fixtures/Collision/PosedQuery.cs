@@ -13,12 +13,18 @@ internal sealed class PosedQuery : ISphereOverlap
 {
     private readonly ClientFrameMatrix _matrix;
 
-    public PosedQuery(PartPose pose, ISphereOverlap partQuery)
+    private readonly bool _refuses;
+
+    /// <param name="pose">The part's pose in the entity.</param>
+    /// <param name="partQuery">The part's test in its own space.</param>
+    /// <param name="refuseByReach">Refuse spheres beyond <see cref="Reach"/> unturned; false where a caller has refused them already (a part registered on its own behind its reach, <see cref="Scenes.PlacedParts"/>).</param>
+    public PosedQuery(PartPose pose, ISphereOverlap partQuery, bool refuseByReach = true)
     {
         Pose = pose;
         PartQuery = partQuery;
         _matrix = pose.Matrix;
         Reach = PartReach.Of(pose, LocalBound.Of(partQuery));
+        _refuses = refuseByReach && Reach.IsBounded;
     }
 
     public PartPose Pose { get; }
@@ -29,7 +35,7 @@ internal sealed class PosedQuery : ISphereOverlap
 
     public bool Overlaps(Vector3 center, float radius)
     {
-        if (!Reach.Reaches(center, radius)) return false;
+        if (_refuses && !Reach.Reaches(center, radius)) return false;
         var (local, localRadius) = Pose.ToLocal(_matrix, center, radius);
         return PartQuery.Overlaps(local, localRadius);
     }

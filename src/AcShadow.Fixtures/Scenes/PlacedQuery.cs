@@ -59,6 +59,12 @@ internal sealed class PlacedQuery
     /// </summary>
     public object FrameKey { get; init; }
 
+    /// <summary>
+    /// For one part of an object registered apart, the whole object behind its own sphere: a walk asks it first, once
+    /// per frame, so a sphere away from the object costs one test however many of its parts a land cell holds.
+    /// </summary>
+    public PlacedQuery? Whole { get; init; }
+
     /// <summary>Does a sphere at this landblock-relative centre touch the object?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {

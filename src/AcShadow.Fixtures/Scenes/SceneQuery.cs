@@ -55,8 +55,13 @@ internal sealed class SceneQuery : ISphereOverlap
 
     private struct EntryTest(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
     {
-        /// <summary>The last frame the sphere was turned into, and the turned sphere: an object's parts share one turn.</summary>
+        /// <summary>
+        /// The frame of the last entry asked, whether its whole object's sphere was met (0 not asked, 1 met, 2 missed),
+        /// and the sphere turned into it once (an object's parts share the test and the turn: the same float operations).
+        /// </summary>
         private object? _frame;
+        private int _whole;
+        private bool _turned;
         private Vector3 _local;
         private float _localRadius;
 
@@ -65,11 +70,17 @@ internal sealed class SceneQuery : ISphereOverlap
             if (entry < objects.Length)
             {
                 var o = objects[entry];
+                if (!ReferenceEquals(o.FrameKey, _frame)) (_frame, _whole, _turned) = (o.FrameKey, 0, false);
+                if (o.Whole is { } whole)
+                {
+                    if (_whole == 0) _whole = whole.Near(center, radius) ? 1 : 2;
+                    if (_whole == 2) return false;
+                }
                 if (!o.Near(center, radius)) return false;
-                if (!ReferenceEquals(o.FrameKey, _frame))
+                if (!_turned)
                 {
                     (_local, _localRadius) = o.ToEntity(center, radius);
-                    _frame = o.FrameKey;
+                    _turned = true;
                 }
                 return o.EntityQuery.Overlaps(_local, _localRadius);
             }

@@ -67,8 +67,9 @@ public class PartReachTests
             Assert.True(RootPasses(pose, last, r));
             Assert.True(reach.Reaches(last, r), $"pose {pose}, tangent sphere at {last} r {r} passes the root test but is refused");
             tangent++;
-            // The reach is tight: a sphere 2 % beyond the tangent one (plus 2 cm) is refused.
-            Assert.False(reach.Reaches(reach.Center + (inside * 1.02f + 0.02f + 0.03f * r) * u, r));
+            // Near a rotation the reach is tight: a sphere 2 % beyond the tangent one (plus 2 cm) is refused.
+            if (MathF.Abs(length - 1f) < 0.01f)
+                Assert.False(reach.Reaches(reach.Center + (inside * 1.02f + 0.02f + 0.03f * r) * u, r));
         }
         Assert.True(tangent > 2500, $"{tangent} tangent spheres");
     }
@@ -76,7 +77,7 @@ public class PartReachTests
     [Fact]
     public void A_pose_whose_matrix_is_far_from_a_rotation_reaches_everywhere_and_still_answers()
     {
-        var pose = Pose(0.6f, 1.1f, 1f);
+        var pose = Pose(2f, 0.3f, 1f);
         Assert.False(PartReach.Of(pose, LocalBound.OfTree(Quad)).IsBounded);
         var posed = new PosedQuery(pose, new BspSphereQuery(Quad));
         var (local, r) = pose.ToLocal(new Vector3(40f, 0f, 0f), 0.5f);
