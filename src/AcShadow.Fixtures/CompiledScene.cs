@@ -14,6 +14,7 @@ namespace AcShadow.Fixtures;
 /// compiler chose for it — spheres, cylinders, part boxes, part convex hulls, or the part's retail BSP
 /// read from the dump beside it — and every indoor cell by its retail tree (cells/0x%08X.bsp.json, asked
 /// as <see cref="CellOverlapQuery"/> asks it), with the same float operations the tool checked them with.
+/// Each part is registered on its own in the land cells (<see cref="PlacedParts"/>), as the tool's compiled scene is.
 /// <see cref="Query"/> takes landblock-relative centres.
 /// </summary>
 public sealed class CompiledScene
@@ -77,7 +78,7 @@ public sealed class CompiledScene
             var shapes = o.Shapes.Select(s => Shape(s, trees, grids, bspFile)).ToArray();
             objects.Add(new CompiledObject(o.Index, o.Id, o.Kind, o.Model, shapes.Length, new Frame(o.Position, o.Rotation)) { CellId = o.CellId });
             if (o.Bound is not { } bound) continue;
-            queries.Add(new PlacedQuery(o.Index, o.Id, o.Position, o.Rotation, new AnyOverlap(shapes), bound.Center, bound.Radius));
+            queries.AddRange(PlacedParts.Of(o.Index, o.Id, o.Position, o.Rotation, new AnyOverlap(shapes), bound.Center, bound.Radius));
         }
         var cells = new List<CompiledCell>();
         var cellQueries = new List<SceneCell>();
@@ -99,8 +100,8 @@ public sealed class CompiledScene
 
     private static ISphereOverlap Shape(CompiledSceneFile.Shape shape, Dictionary<string, BspSphereQuery> trees, BspReachGrids grids, Func<string, BspDump> bspFile) => shape switch
     {
-        CompiledSceneFile.SphereShape s => new SphereShape(s.Center, s.Radius),
-        CompiledSceneFile.CylinderShape c => new CylinderShape(c.Base, c.Radius, c.Height),
+        CompiledSceneFile.SphereShape s => new SphereShapeQuery(s.Center, s.Radius),
+        CompiledSceneFile.CylinderShape c => new CylinderShapeQuery(c.Base, c.Radius, c.Height),
         CompiledSceneFile.BoxShape b => new PosedQuery(b.Pose, new BoxSphereQuery(b.Box)),
         CompiledSceneFile.HullShape h => new PosedQuery(h.Pose, h.Hull),
         CompiledSceneFile.BspShape t => new PosedQuery(t.Pose, grids.Index(Tree(t.File, trees, bspFile), t.Pose)),
@@ -112,15 +113,5 @@ public sealed class CompiledScene
         if (!trees.TryGetValue(file, out var query))
             trees[file] = query = new BspSphereQuery(CompiledBsp.Compile(bspFile(file)));
         return query;
-    }
-
-    private sealed class SphereShape(Vector3 center, float radius) : ISphereOverlap
-    {
-        public bool Overlaps(Vector3 c, float r) => SphereBounds.IsValidProbe(c, r) && SphereSphereTest.Touches(center, radius, c, r);
-    }
-
-    private sealed class CylinderShape(Vector3 baseCenter, float radius, float height) : ISphereOverlap
-    {
-        public bool Overlaps(Vector3 c, float r) => SphereBounds.IsValidProbe(c, r) && CylinderSphereTest.Touches(baseCenter, radius, height, c, r);
     }
 }

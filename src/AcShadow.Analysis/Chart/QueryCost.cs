@@ -46,10 +46,16 @@ internal static class QueryCost
         return (double)total / n;
     }
 
-    /// <summary>A model's shapes made ready to be counted, query after query; with <paramref name="grids"/>, its trees as asked through their voxel indexes.</summary>
-    public sealed class Counter(IReadOnlyList<PreparedShape> shapes, BspReachGrids? grids = null)
+    /// <summary>
+    /// A model's shapes made ready to be counted, query after query. With <paramref name="partReach"/> a posed part
+    /// (tree, box, hull) first costs 1 for its reach in the entity frame (<see cref="PartReach"/>, which
+    /// <see cref="PosedQuery"/> tests), and a sphere beyond it costs nothing more. The scene counts so; a model's own
+    /// count (<see cref="PerQuery"/>, which orders the ladder) is left as the ladder was tuned. With
+    /// <paramref name="grids"/>, its trees are counted as asked through their voxel indexes.
+    /// </summary>
+    public sealed class Counter(IReadOnlyList<PreparedShape> shapes, bool partReach = false, BspReachGrids? grids = null)
     {
-        private readonly Shape[] _shapes = [.. shapes.Select(s => Shape.Of(s, grids))];
+        private readonly Shape[] _shapes = [.. shapes.Select(s => Shape.Of(s, partReach, grids))];
 
         /// <summary>The count for one query, and whether the model blocks there.</summary>
         public int Count(Vector3 center, float radius, out bool blocked)
@@ -70,14 +76,28 @@ internal static class QueryCost
     {
         public abstract int Count(Vector3 center, float radius, out bool blocked);
 
-        public static Shape Of(PreparedShape s, BspReachGrids? grids) => s switch
+        public static Shape Of(PreparedShape s, bool partReach, BspReachGrids? grids) => s switch
         {
-            { Box: { } box } => new BoxShape(s.Pose, new BoxSphereQuery(box)),
-            { Polytope: { } hull } => new HullShape(s.Pose, hull),
-            { Bsp: { } bsp } => new BspShape(s.Pose, bsp, grids),
+            { Box: { } box } => Reached(s.Pose, LocalBound.OfBox(box), new BoxShape(s.Pose, new BoxSphereQuery(box)), partReach),
+            { Polytope: { } hull } => Reached(s.Pose, hull.Bound, new HullShape(s.Pose, hull), partReach),
+            { Bsp: { } bsp } => Reached(s.Pose, LocalBound.OfTree(bsp), new BspShape(s.Pose, bsp, grids), partReach),
             _ when s.Shape.CollisionType == CollisionType.Cylinder => new CylinderShape(s.Shape),
             _ => new SphereShape(s.Shape),
         };
+
+        private static Shape Reached(PartPose pose, (Vector3 Center, float Radius)? local, Shape shape, bool partReach) =>
+            partReach && PartReach.Of(pose, local) is { IsBounded: true } reach ? new ReachedShape(reach, shape) : shape;
+    }
+
+    /// <summary>A posed part behind its reach in the entity frame: 1, then the part's own count when the sphere is within it.</summary>
+    private sealed class ReachedShape(PartReach reach, Shape part) : Shape
+    {
+        public override int Count(Vector3 center, float radius, out bool blocked)
+        {
+            blocked = false;
+            if (!reach.Reaches(center, radius)) return 1;
+            return 1 + part.Count(center, radius, out blocked);
+        }
     }
 
     private sealed class SphereShape(ShadowShape s) : Shape

@@ -169,9 +169,10 @@ internal static class SceneCompiler
         IReadOnlyList<CellCompilation> cells, SceneCompileOptions options, IQueryTimer timer)
     {
         var retail = Query(placed, compiled, cells, c => c.Retail);
-        // The compiled scene asks every tree through its per-radius grids (BspReachGrid): retail's answers, fewer steps.
+        // The compiled scene registers each posed part on its own (PlacedParts) and asks every tree through its
+        // per-radius grids (BspReachGrid): retail's answers, fewer steps.
         var grids = new BspReachGrids(options.Chart.Radii);
-        var chosen = Query(placed, compiled, cells, c => c.Chosen, grids);
+        var chosen = Query(placed, compiled, cells, c => c.Chosen, partsApart: true, grids: grids);
         var segments = new List<(IReadOnlyList<Probe>, PartPose)>();
         foreach (var p in placed)
         {
@@ -191,7 +192,7 @@ internal static class SceneCompiler
             else falseBlock++;
         }
         var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
-        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, grids: grids);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true, grids: grids);
         var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive);
         var retailModel = new PreparedModel(retail, [], []);
         var compiledModel = new PreparedModel(chosen, [], []);
@@ -220,29 +221,41 @@ internal static class SceneCompiler
 
     /// <summary>
     /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
-    /// gives behind a bounding sphere around that model's own shapes, and every cell by its retail tree
-    /// (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell); with <paramref name="grids"/>, every
+    /// gives behind a bounding sphere around that model's own shapes — or, <paramref name="partsApart"/> (the
+    /// compiled scene), each posed part behind its own (<see cref="PlacedParts"/>) — and every cell by its retail
+    /// tree (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell); with <paramref name="grids"/>, every
     /// tree asked through its <see cref="BspReachGrid"/>s, as the fixtures library's compiled scene asks it.
     /// </summary>
     internal static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, BspReachGrids? grids = null)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart = false, BspReachGrids? grids = null) =>
+        new([.. Entries(placed, compiled, pick, partsApart, grids).Select(e => e.Entry)], CellQueries(cells, grids));
+
+    /// <summary>The scene's object entries in order, each with the model it asks (one per object, or per part <paramref name="partsApart"/>).</summary>
+    internal static IEnumerable<(PlacedQuery Entry, PreparedModel Model)> Entries(IReadOnlyList<PlacedObject> placed,
+        IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart, BspReachGrids? grids = null)
     {
-        var objects = new List<PlacedQuery>();
         var indexed = new Dictionary<ISphereOverlap, ISphereOverlap>(ReferenceEqualityComparer.Instance);
         foreach (var (p, model, center, radius) in Placements(placed, compiled, pick))
         {
+            var o = p.Object;
             var query = model.Query;
             if (grids is not null && query is ObjectOverlapQuery parts && !indexed.TryGetValue(parts, out query))
                 indexed[parts] = query = parts.Indexed(grids);
-            objects.Add(new PlacedQuery(p.Object.Index, p.Object.Id, p.Object.Frame.Position, p.Object.Frame.Rotation, query, center, radius));
+            if (!partsApart)
+                yield return (new PlacedQuery(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, query, center, radius), model);
+            else
+                foreach (var part in PlacedParts.Of(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, query, center, radius))
+                    yield return (part, model);
         }
-        var cellQueries = cells.Where(c => c.Bsp is not null).Select(c =>
+    }
+
+    /// <summary>Every cell with a tree, as the scene asks it.</summary>
+    internal static SceneCell[] CellQueries(IReadOnlyList<CellCompilation> cells, BspReachGrids? grids = null) =>
+        [.. cells.Where(c => c.Bsp is not null).Select(c =>
         {
             var query = new CellOverlapQuery(c.Bsp!, c.Cell.Position.Position, c.Cell.Position.Rotation);
             return new SceneCell(c.Cell.Id, grids is null ? query : query.Indexed(grids));
-        }).ToArray();
-        return new SceneQuery(objects, cellQueries);
-    }
+        })];
 
     /// <summary>The placed objects a scene asks, in order, each with the picked model and the entity-space sphere around its shapes.</summary>
     internal static IEnumerable<(PlacedObject Placed, PreparedModel Model, Vector3 Center, float Radius)> Placements(IReadOnlyList<PlacedObject> placed,
@@ -258,8 +271,8 @@ internal static class SceneCompiler
     }
 
     /// <summary>The whole compiled scene (or all-retail) of a report.</summary>
-    internal static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick) =>
-        Query(report.Placed, report.Compiled, report.Cells, pick);
+    internal static SceneQuery Query(CompiledSceneReport report, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart = false) =>
+        Query(report.Placed, report.Compiled, report.Cells, pick, partsApart);
 
     /// <summary>The sphere around an entity-space box, padded so rounding never lets it reject a touching sphere.</summary>
     public static (Vector3 Center, float Radius) Bound(Bounds b)

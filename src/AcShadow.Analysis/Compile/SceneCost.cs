@@ -11,8 +11,9 @@ namespace AcShadow.Analysis.Compile;
 /// What asking the whole scene about one mover position costs, counted as <see cref="QueryCost"/> counts
 /// an object (one unit a distance evaluation), along the walk <see cref="SceneQuery"/> takes: the sphere's
 /// land cells found <see cref="LandCellReach"/>, their candidate list loaded <see cref="LandCellVisit"/>, then
-/// for each object it holds its bounding sphere 1 and, for a position inside it, the turn into the
-/// object's frame and its model's count; for each indoor cell registered there its root sphere in the
+/// for each object (or, the compiled scene, each part: <see cref="PlacedParts"/>) it holds its bounding sphere 1
+/// and, for a position inside it, the turn into the object's frame and its model's count (each posed part's reach
+/// in the entity frame 1 before its turn: <see cref="PartReach"/>); for each indoor cell registered there its root sphere in the
 /// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
 /// stopping at the first that blocks; given the compiled scene's grids, a tree asked through its
 /// voxel index counts as <see cref="QueryCost"/> counts an indexed tree. <see cref="SceneWalk.Exhaustive"/> counts the old walk
@@ -26,18 +27,23 @@ internal static class SceneCost
     /// <summary>Loading one candidate list: a mover range's flat array, or (a mover wider than a cell) one land cell's list.</summary>
     public const int LandCellVisit = 1;
 
+    /// <summary>Counted ops per position along <paramref name="walk"/>; <paramref name="partsApart"/>: the compiled scene's walk, each posed part an entry of its own (<see cref="PlacedParts"/>).</summary>
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample, SceneWalk walk = SceneWalk.Partitioned, BspReachGrids? grids = null)
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample,
+        SceneWalk walk = SceneWalk.Partitioned, bool partsApart = false, BspReachGrids? grids = null)
     {
         if (positions.Count == 0 || sample < 1) return 0;
-        var objects = SceneCompiler.Placements(placed, compiled, pick).Select(o =>
+        var entries = SceneCompiler.Entries(placed, compiled, pick, partsApart).ToArray();
+        var objects = entries.Select(e =>
         {
-            var frame = new PartPose(o.Placed.Object.Frame.Position, ClientFrameMatrix.PlacedRotation(o.Placed.Object.Frame.Rotation), 1f);
-            return new ObjectCounter(frame, frame.ToEntity(o.Center), o.Radius, new QueryCost.Counter(o.Model.Shapes, grids));
+            var (bound, radius) = e.Entry.LandblockBound;
+            IReadOnlyList<PreparedShape> shapes = e.Entry.Shapes is { } asked ? [.. asked.Select(i => e.Model.Shapes[i])] : e.Model.Shapes;
+            // A part registered apart is asked behind its reach already (its landblock bound), not again.
+            return new ObjectCounter(e.Entry.Frame, e.Entry.FrameKey, e.Entry.Whole?.LandblockBound, bound, radius, new QueryCost.Counter(shapes, partReach: e.Entry.Shapes is null, grids));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
-            .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)], grids))).ToArray();
-        var query = SceneCompiler.Query(placed, compiled, cells, pick);
+            .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)], grids: grids))).ToArray();
+        var query = new SceneQuery([.. entries.Select(e => e.Entry)], SceneCompiler.CellQueries(cells));
         var partition = query.Partition;
         CellReach[] cellReach = [.. query.CellReaches];
         var n = Math.Min(sample, positions.Count);
@@ -66,12 +72,16 @@ internal static class SceneCost
         }
     }
 
-    private sealed record ObjectCounter(PartPose Frame, Vector3 Bound, float Radius, QueryCost.Counter Counter);
+    private sealed record ObjectCounter(PartPose Frame, object FrameKey, (Vector3 Center, float Radius)? Whole, Vector3 Bound, float Radius, QueryCost.Counter Counter);
 
     /// <summary>One position's count along a walk (<paramref name="cellReach"/> null: the exhaustive walk, which turns into every cell).</summary>
     private struct Counting(ObjectCounter[] objects, (PartPose Frame, QueryCost.Counter Counter)[] cells, CellReach[]? cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
     {
         public long Ops;
+        /// <summary>The frame of the last entry: the parts of one object share its whole sphere's test (0 not asked, 1 met, 2 missed) and the turn, as the query does.</summary>
+        private object? _frame;
+        private int _whole;
+        private bool _turned;
 
         public bool Test(int entry)
         {
@@ -90,15 +100,32 @@ internal static class SceneCost
                 return cellBlocked;
             }
             var o = objects[entry];
+            if (!ReferenceEquals(o.FrameKey, _frame)) (_frame, _whole, _turned) = (o.FrameKey, 0, false);
+            if (o.Whole is { } whole)
+            {
+                if (_whole == 0)
+                {
+                    Ops++;
+                    _whole = Within(whole.Center, whole.Radius) ? 1 : 2;
+                }
+                if (_whole == 2) return false;
+            }
             Ops++;
-            float dx = center.X - o.Bound.X, dy = center.Y - o.Bound.Y, dz = center.Z - o.Bound.Z, sum = o.Radius + radius;
-            if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
+            if (!Within(o.Bound, o.Radius)) return false;
             var (local, r) = o.Frame.ToLocal(center, radius);
-            Ops += QueryCost.Transform + o.Counter.Count(local, r, out var blocked);
+            if (!_turned) Ops += QueryCost.Transform;
+            _turned = true;
+            Ops += o.Counter.Count(local, r, out var blocked);
             return blocked;
         }
 
         public void Visit() => Ops += LandCellVisit;
+
+        private readonly bool Within(Vector3 bound, float boundRadius)
+        {
+            float dx = center.X - bound.X, dy = center.Y - bound.Y, dz = center.Z - bound.Z, sum = boundRadius + radius;
+            return dx * dx + dy * dy + dz * dz <= sum * sum;
+        }
     }
 
     private static readonly Fixtures.Shapes.ShadowShape CellShape = new(Fixtures.Shapes.ShapeSource.Part, 0, null, Fixtures.Shapes.CollisionType.Bsp,

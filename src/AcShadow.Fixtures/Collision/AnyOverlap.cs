@@ -7,6 +7,8 @@ internal sealed class AnyOverlap(IReadOnlyList<ISphereOverlap> shapes) : ISphere
 {
     private readonly ISphereOverlap[] _shapes = [.. shapes];
 
+    public IReadOnlyList<ISphereOverlap> Shapes => _shapes;
+
     public bool Overlaps(Vector3 center, float radius)
     {
         foreach (var shape in _shapes)

@@ -23,7 +23,7 @@ internal sealed class BspReachGrids(IReadOnlyList<float> moverRadii)
     /// <summary>Time spent building the grids so far.</summary>
     public TimeSpan BuildTime => Stopwatch.GetElapsedTime(0, Interlocked.Read(ref _buildTicks));
 
-    /// <summary>The tree of a part at <paramref name="pose"/>, asked through its grids for the mover radii in part units (<see cref="PartPose.ToLocal"/>).</summary>
+    /// <summary>The tree of a part at <paramref name="pose"/>, asked through its grids for the mover radii in part units (<see cref="PartPose.ToLocal(Vector3, float)"/>).</summary>
     public IndexedBspQuery Index(BspSphereQuery tree, PartPose pose)
     {
         var grids = new List<BspReachGrid>();

@@ -21,6 +21,9 @@ internal sealed class ConvexPolytope : ISphereOverlap
     public IReadOnlyList<Vector3> Vertices { get; }
     public IReadOnlyList<CompiledPolygon> Faces => _faces;
 
+    /// <summary>The sphere <see cref="Overlaps"/> rejects by first (null: no faces, nothing is blocked).</summary>
+    public (Vector3 Center, float Radius)? Bound => _faces.Length == 0 ? null : (_boundCenter, _boundRadius);
+
     /// <summary>
     /// The solid as a one-leaf BSP whose leaf sphere is this polytope's bounding sphere (<see cref="CompiledBsp.SolidLeaf"/>),
     /// its faces in <paramref name="order"/> (default: <see cref="Faces"/>' order).

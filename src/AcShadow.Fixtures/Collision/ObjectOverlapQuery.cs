@@ -7,18 +7,22 @@ namespace AcShadow.Fixtures.Collision;
 /// <summary>
 /// "Does a query sphere at entity-space centre c with radius r overlap the object?" over a
 /// <see cref="ShadowShapeSet"/>: blocked when any shape blocks. BSP shapes move the sphere into the part's
-/// space (<see cref="PartPose.ToLocal"/>) and ask the part's tree (<see cref="BspSphereQuery"/>); Cylinder shapes use <see cref="CylinderSphereTest"/> with the base at LocalPosition;
+/// space (<see cref="PosedQuery"/>, refused first by the part's reach in the entity frame) and ask the part's tree
+/// (<see cref="BspSphereQuery"/>); Cylinder shapes use <see cref="CylinderSphereTest"/> with the base at LocalPosition;
 /// Sphere shapes use <see cref="SphereSphereTest"/>. A shape that cannot be tested (no PhysicsBSP dump, NaN
 /// in its frame, a scale that is zero or not finite) is skipped with a diagnostic naming it.
 /// </summary>
 internal sealed class ObjectOverlapQuery : ISphereOverlap
 {
-    private readonly IShapeCheck[] _checks;
+    private readonly ISphereOverlap[] _checks;
 
     public IReadOnlyList<PreparedShape> Shapes { get; }
     public IReadOnlyList<Diagnostic> Diagnostics { get; }
 
-    private ObjectOverlapQuery(IShapeCheck[] checks, IReadOnlyList<PreparedShape> shapes, IReadOnlyList<Diagnostic> diagnostics)
+    /// <summary>One query per shape, in <see cref="Shapes"/> order (CPhysicsObj::FindObjCollisions asks each part in turn).</summary>
+    public IReadOnlyList<ISphereOverlap> Parts => _checks;
+
+    private ObjectOverlapQuery(ISphereOverlap[] checks, IReadOnlyList<PreparedShape> shapes, IReadOnlyList<Diagnostic> diagnostics)
     {
         _checks = checks;
         Shapes = shapes;
@@ -28,7 +32,7 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
     public static ObjectOverlapQuery Create(IEnumerable<ShadowShape> shapes, Func<uint, CompiledBsp?> bsps)
     {
         var log = new DiagnosticLog();
-        var checks = new List<IShapeCheck>();
+        var checks = new List<ISphereOverlap>();
         var prepared = new List<PreparedShape>();
         var queries = new Dictionary<uint, ISphereOverlap>();
         foreach (var shape in shapes)
@@ -46,15 +50,15 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
                     var id = part.Bsp!.GfxObjId;
                     if (!queries.TryGetValue(id, out var query))
                         queries[id] = query = new BspSphereQuery(part.Bsp);
-                    checks.Add(new BspCheck(part.Pose, query));
+                    checks.Add(new PosedQuery(part.Pose, query));
                     prepared.Add(part);
                     break;
                 case CollisionType.Cylinder:
-                    checks.Add(new CylinderCheck(shape.LocalPosition, shape.Radius, shape.CylHeight));
+                    checks.Add(new CylinderShapeQuery(shape.LocalPosition, shape.Radius, shape.CylHeight));
                     prepared.Add(new PreparedShape(shape, name, new PartPose(shape.LocalPosition, Quaternion.Identity, 1f), null));
                     break;
                 default:
-                    checks.Add(new SphereCheck(shape.LocalPosition, shape.Radius));
+                    checks.Add(new SphereShapeQuery(shape.LocalPosition, shape.Radius));
                     prepared.Add(new PreparedShape(shape, name, new PartPose(shape.LocalPosition, Quaternion.Identity, 1f), null));
                     break;
             }
@@ -67,7 +71,7 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
 
     /// <summary>The same object with each part's tree asked through its <see cref="BspReachGrid"/>s for the scene's mover radii: the same answers.</summary>
     internal ObjectOverlapQuery Indexed(BspReachGrids grids) =>
-        new([.. _checks.Select(c => c is BspCheck { Query: BspSphereQuery tree } part ? new BspCheck(part.Pose, grids.Index(tree, part.Pose)) : c)], Shapes, Diagnostics);
+        new([.. _checks.Select(c => c is PosedQuery { PartQuery: BspSphereQuery tree } part ? new PosedQuery(part.Pose, grids.Index(tree, part.Pose)) : c)], Shapes, Diagnostics);
 
     public bool Overlaps(Vector3 center, float radius)
     {
@@ -90,33 +94,5 @@ internal sealed class ObjectOverlapQuery : ISphereOverlap
         var bsp = bsps(id);
         if (bsp is null) { log.Add(CollisionDiagnosticCodes.SkippedShape, $"{name}: no PhysicsBSP for GfxObj 0x{id:X8}; skipped"); return null; }
         return new PreparedShape(shape, name, PartPose.InEntity(shape.LocalPosition, rotation, shape.Scale), bsp);
-    }
-
-    private interface IShapeCheck
-    {
-        bool Overlaps(Vector3 center, float radius);
-    }
-
-    private sealed class BspCheck(PartPose pose, ISphereOverlap query) : IShapeCheck
-    {
-        public PartPose Pose => pose;
-
-        public ISphereOverlap Query => query;
-
-        public bool Overlaps(Vector3 center, float radius)
-        {
-            var (localCenter, localRadius) = pose.ToLocal(center, radius);
-            return query.Overlaps(localCenter, localRadius);
-        }
-    }
-
-    private sealed class CylinderCheck(Vector3 baseCenter, float radius, float height) : IShapeCheck
-    {
-        public bool Overlaps(Vector3 center, float r) => CylinderSphereTest.Touches(baseCenter, radius, height, center, r);
-    }
-
-    private sealed class SphereCheck(Vector3 sphereCenter, float radius) : IShapeCheck
-    {
-        public bool Overlaps(Vector3 center, float r) => SphereSphereTest.Touches(sphereCenter, radius, center, r);
     }
 }

@@ -21,10 +21,13 @@ internal readonly record struct PartPose(Vector3 Position, Quaternion Rotation, 
     /// The query sphere in the part's own space (SPHEREPATH::cache_localspace_sphere): Frame::globaltolocal
     /// into the part's frame, then each stored component and the radius multiplied by the float 1 / scale.
     /// </summary>
-    public (Vector3 Center, float Radius) ToLocal(Vector3 center, float radius)
+    public (Vector3 Center, float Radius) ToLocal(Vector3 center, float radius) => ToLocal(Matrix, center, radius);
+
+    /// <summary><see cref="ToLocal(Vector3, float)"/> with <see cref="Matrix"/> built once by a query asked many times.</summary>
+    public (Vector3 Center, float Radius) ToLocal(in ClientFrameMatrix matrix, Vector3 center, float radius)
     {
         var invScale = 1f / Scale;
-        var local = Matrix.GlobalToLocal(center);
+        var local = matrix.GlobalToLocal(center);
         return (new Vector3(local.X * invScale, local.Y * invScale, local.Z * invScale), radius * invScale);
     }
 

@@ -8,13 +8,15 @@ namespace AcShadow.Fixtures.Scenes;
 /// One placed object of a scene as a query: its landblock-relative frame (the entity's position and its rotation
 /// as the client holds it, <see cref="ClientFrameMatrix.PlacedRotation"/>; the client turns the moving sphere into
 /// each object's frame), its collision in entity
-/// space, and an entity-space sphere around everything it can block, for the broad phase.
+/// space, and an entity-space sphere around everything it can block, for the broad phase. The compiled scene places
+/// each part of an object as one of these (<see cref="PlacedParts"/>), behind the part's own sphere.
 /// </summary>
 internal sealed class PlacedQuery
 {
     private readonly Vector3 _boundInLandblock;
     private readonly float _stretch;
     private readonly float _reach;
+    private readonly ClientFrameMatrix _matrix;
 
     public int Index { get; }
     public uint Id { get; }
@@ -23,11 +25,17 @@ internal sealed class PlacedQuery
     public Vector3 BoundCenter { get; }
     public float BoundRadius { get; }
 
-    public PlacedQuery(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius)
+    /// <summary>Which of the object's shapes (in its model's order) <see cref="EntityQuery"/> asks; null: all of them.</summary>
+    public IReadOnlyList<int>? Shapes { get; init; }
+
+    /// <summary>An object (or one part of it) behind an entity-space bound; <paramref name="radiusStretch"/> is the factor the bound puts on the query radius (<see cref="PartReach.Stretch"/>; 1 for a plain sphere).</summary>
+    public PlacedQuery(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius, float radiusStretch = 1f)
     {
         Index = index;
         Id = id;
         Frame = new PartPose(position, ClientFrameMatrix.PlacedRotation(rotation), 1f);
+        _matrix = Frame.Matrix;
+        FrameKey = this;
         EntityQuery = entityQuery;
         BoundCenter = boundCenter;
         BoundRadius = boundRadius;
@@ -37,7 +45,7 @@ internal sealed class PlacedQuery
         // much (zero for a unit quaternion) so it never refuses what the narrow phase would block.
         var q = Frame.Rotation;
         var off = 4.0 * Math.Abs(1.0 - ((double)q.W * q.W + (double)q.X * q.X + (double)q.Y * q.Y + (double)q.Z * q.Z));
-        _stretch = (float)(1.0 + off);
+        _stretch = (float)((1.0 + off) * radiusStretch);
         var fromOrigin = Math.Sqrt((double)boundCenter.X * boundCenter.X + (double)boundCenter.Y * boundCenter.Y + (double)boundCenter.Z * boundCenter.Z);
         _reach = (float)(boundRadius + off * (boundRadius + fromOrigin));
     }
@@ -45,13 +53,34 @@ internal sealed class PlacedQuery
     /// <summary>The bounding sphere in the landblock's frame, as <see cref="Overlaps"/> tests it first.</summary>
     public (Vector3 Center, float Radius) LandblockBound => (_boundInLandblock, BoundRadius);
 
+    /// <summary>
+    /// Entries that share this key stand in the same frame (the parts of one object, <see cref="PlacedParts"/>): a walk
+    /// may turn a sphere once for all of them, since the turn is the same float operations each time.
+    /// </summary>
+    public object FrameKey { get; init; }
+
+    /// <summary>
+    /// For one part of an object registered apart, the whole object behind its own sphere: a walk asks it first, once
+    /// per frame, so a sphere away from the object costs one test however many of its parts a land cell holds.
+    /// </summary>
+    public PlacedQuery? Whole { get; init; }
+
     /// <summary>Does a sphere at this landblock-relative centre touch the object?</summary>
     public bool Overlaps(Vector3 center, float radius)
     {
-        float dx = center.X - _boundInLandblock.X, dy = center.Y - _boundInLandblock.Y, dz = center.Z - _boundInLandblock.Z;
-        var sum = _reach + radius * _stretch;
-        if (!(dx * dx + dy * dy + dz * dz <= sum * sum)) return false;
-        var (local, r) = Frame.ToLocal(center, radius);
+        if (!Near(center, radius)) return false;
+        var (local, r) = ToEntity(center, radius);
         return EntityQuery.Overlaps(local, r);
     }
+
+    /// <summary>The broad phase: is the sphere within the bound (so <see cref="EntityQuery"/> may block it)?</summary>
+    public bool Near(Vector3 center, float radius)
+    {
+        float dx = center.X - _boundInLandblock.X, dy = center.Y - _boundInLandblock.Y, dz = center.Z - _boundInLandblock.Z;
+        var sum = _reach + radius * _stretch;
+        return dx * dx + dy * dy + dz * dz <= sum * sum;
+    }
+
+    /// <summary>The sphere in the object's frame (Frame::globaltolocal with the matrix built once).</summary>
+    public (Vector3 Center, float Radius) ToEntity(Vector3 center, float radius) => Frame.ToLocal(_matrix, center, radius);
 }

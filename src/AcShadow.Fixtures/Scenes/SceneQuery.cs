@@ -53,16 +53,42 @@ internal sealed class SceneQuery : ISphereOverlap
     public IEnumerable<uint> TouchingCells(Vector3 center, float radius) =>
         _cells.Where((c, i) => Partition.Reaches(_objects.Length + i, center, radius) && c.Query.Overlaps(center, radius)).Select(c => c.CellId);
 
-    private readonly struct EntryTest(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
+    private struct EntryTest(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
     {
+        /// <summary>
+        /// The frame of the last entry asked, whether its whole object's sphere was met (0 not asked, 1 met, 2 missed),
+        /// and the sphere turned into it once (an object's parts share the test and the turn: the same float operations).
+        /// </summary>
+        private object? _frame;
+        private int _whole;
+        private bool _turned;
+        private Vector3 _local;
+        private float _localRadius;
+
         public bool Test(int entry)
         {
-            if (entry < objects.Length) return objects[entry].Overlaps(center, radius);
+            if (entry < objects.Length)
+            {
+                var o = objects[entry];
+                if (!ReferenceEquals(o.FrameKey, _frame)) (_frame, _whole, _turned) = (o.FrameKey, 0, false);
+                if (o.Whole is { } whole)
+                {
+                    if (_whole == 0) _whole = whole.Near(center, radius) ? 1 : 2;
+                    if (_whole == 2) return false;
+                }
+                if (!o.Near(center, radius)) return false;
+                if (!_turned)
+                {
+                    (_local, _localRadius) = o.ToEntity(center, radius);
+                    _turned = true;
+                }
+                return o.EntityQuery.Overlaps(_local, _localRadius);
+            }
             var cell = entry - objects.Length;
             return cellReach[cell].Reaches(center, radius) && cells[cell].Query.Overlaps(center, radius);
         }
 
-        public void Visit() { }
+        public readonly void Visit() { }
     }
 
     private sealed class ExhaustiveWalk(PlacedQuery[] objects, SceneCell[] cells) : ISphereOverlap

@@ -69,7 +69,7 @@ public class BspReachGridTests
         // Indexing the door's parts builds their grids, which the counter then finds.
         var query = Assert.IsType<ObjectOverlapQuery>(door.Query).Indexed(grids);
         var plain = new QueryCost.Counter(door.Shapes);
-        var indexed = new QueryCost.Counter(door.Shapes, grids);
+        var indexed = new QueryCost.Counter(door.Shapes, grids: grids);
         long plainOps = 0, indexedOps = 0;
         foreach (var p in report.Compiled.Values.Single(c => c.Id == 0x020019FF).Probes)
         {

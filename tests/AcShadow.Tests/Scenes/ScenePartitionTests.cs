@@ -16,7 +16,8 @@ namespace AcShadow.Tests.Scenes;
 /// calc_cross_cells_static registers a shadow; a mover sphere asked of the land cells find_cell_list gives it)
 /// answers exactly as the exhaustive walk over every object and every cell: at every position the scene is
 /// checked at, on the built-in sample and on landblock 0x0000 of a dat `forge scale` wrote, all-retail and
-/// compiled, and at spheres placed on land-cell edges and tangent to every bound. Indoor cells are registered
+/// compiled (each posed part registered apart, as the compiled scene asks), and at spheres placed on land-cell edges
+/// and tangent to every bound. Indoor cells are registered
 /// by their tree's root sphere in the land cells beneath it, a superset of what the client reaches through
 /// building portals: no answer the exhaustive walk gives is dropped, so no retail rule had to overrule it.
 /// </summary>
@@ -40,9 +41,9 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     {
         var report = SceneCompileTests.Exact.Value;
         var probes = Positions(report).ToArray();
-        foreach (var pick in new Func<ObjectCompilation, AcShadow.Analysis.Chart.Models.PreparedModel?>[] { c => c.Retail, c => c.Chosen })
+        foreach (var (pick, partsApart) in new (Func<ObjectCompilation, AcShadow.Analysis.Chart.Models.PreparedModel?>, bool)[] { (c => c.Retail, false), (c => c.Chosen, true) })
         {
-            var query = SceneCompiler.Query(report, pick);
+            var query = SceneCompiler.Query(report, pick, partsApart);
             var blocked = 0;
             foreach (var (at, r) in probes) blocked += query.Overlaps(at, r) ? 1 : 0;
             var before = GC.GetAllocatedBytesForCurrentThread();
@@ -82,9 +83,15 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
             File.WriteAllBytes(path, f.Content.Span);
         }
         var loaded = CompiledScene.Load(dir.Path);
+        // Its parts registered apart, as the tool's compiled scene; the tool's object-by-object walk is the oracle.
+        var tool = SceneCompiler.Query(report, c => c.Chosen).Exhaustive;
+        Assert.True(loaded.Query.Objects.Count > report.Placed.Count, $"{loaded.Query.Objects.Count} entries for {report.Placed.Count} objects");
         var positions = Positions(report).Concat(EdgePositions(loaded.Query)).ToArray();
         foreach (var (at, r) in positions)
+        {
             Assert.True(loaded.Overlaps(at, r) == loaded.Query.Exhaustive.Overlaps(at, r), $"{at} r {r}");
+            Assert.True(loaded.Overlaps(at, r) == tool.Overlaps(at, r), $"{at} r {r}: the tool's walk");
+        }
         Assert.Contains(positions, p => loaded.Overlaps(p.At, p.Radius));
         Assert.Contains(positions, p => !loaded.Overlaps(p.At, p.Radius));
     }
@@ -166,22 +173,28 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
 
     /// <summary>
     /// Every scene position (what Totals asks) and every edge position: the partitioned answer and the touched
-    /// cells equal the exhaustive walk's, all-retail and compiled. Returns how many of each were checked.
+    /// cells equal the exhaustive walk's (object by object), all-retail, compiled, and compiled with each posed part
+    /// registered on its own (<see cref="PlacedParts"/>; its edge positions are tangent to every part's bound).
+    /// Returns how many of each were checked.
     /// </summary>
     private static (int Probes, int Edges) AssertSameAnswers(CompiledSceneReport report)
     {
         var probes = Positions(report).ToArray();
         var edges = 0;
-        foreach (var pick in new Func<ObjectCompilation, AcShadow.Analysis.Chart.Models.PreparedModel?>[] { c => c.Retail, c => c.Chosen })
+        foreach (var (pick, partsApart) in new (Func<ObjectCompilation, AcShadow.Analysis.Chart.Models.PreparedModel?>, bool)[] { (c => c.Retail, false), (c => c.Chosen, false), (c => c.Chosen, true) })
         {
-            var query = SceneCompiler.Query(report, pick);
+            var oracle = SceneCompiler.Query(report, pick).Exhaustive;
+            var query = SceneCompiler.Query(report, pick, partsApart);
+            if (partsApart)
+                Assert.True(query.Objects.Count > query.Objects.Select(o => o.FrameKey).Distinct().Count(), $"{query.Objects.Count} entries: no object was split into parts");
             var edgeProbes = EdgePositions(query).ToArray();
             edges = edgeProbes.Length;
             int blocked = 0;
             foreach (var (at, r) in probes.Concat(edgeProbes))
             {
-                var expected = query.Exhaustive.Overlaps(at, r);
-                Assert.True(expected == query.Overlaps(at, r), $"{at} r {r}: exhaustive {expected}");
+                var expected = oracle.Overlaps(at, r);
+                Assert.True(expected == query.Overlaps(at, r), $"{at} r {r}: exhaustive {expected} (parts apart: {partsApart})");
+                Assert.True(expected == query.Exhaustive.Overlaps(at, r), $"{at} r {r}: exhaustive {expected}, its own entries walked in turn");
                 if (expected) blocked++;
                 var cells = query.Cells.Where(c => c.Query.Overlaps(at, r)).Select(c => c.CellId);
                 Assert.Equal(cells, query.TouchingCells(at, r));
