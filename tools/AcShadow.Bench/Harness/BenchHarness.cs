@@ -42,12 +42,13 @@ public static class BenchHarness
         {
             var jobCounts = cores > 1 ? new[] { 1, cores } : [1];
             // batch --all at every job count into empty folders of the place, and the check that their outputs are the same bytes.
+            // The job counts take turns run by run: whatever drifts while they run (the write-back of what an earlier
+            // workload wrote, the virtual machine's memory backing) then falls on both sides of the ratio alike.
             Dictionary<int, string> Batches(string size, string dat, CachedDat forged, string output, RunFolders place)
             {
                 var outputs = new Dictionary<int, string>();
-                foreach (var jobs in jobCounts)
-                    timings.Add(Measure(log, options, "batch", size, jobs, output, $"acshadow batch --all --jobs {jobs} --quiet into an empty folder ({forged.Setups} Setups)",
-                        run => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", forged.Directory, "--out", outputs[jobs] = place.Empty($"batch-{size}-j{jobs}", run), "--jobs", Text(jobs), "--quiet"])));
+                timings.AddRange(MeasureInterleaved(log, options, "batch", size, jobCounts, output, jobs => $"acshadow batch --all --jobs {jobs} --quiet into an empty folder ({forged.Setups} Setups)",
+                    (jobs, run) => ProcessRunner.Run(options.Cli, ["batch", "--all", "--dat", forged.Directory, "--out", outputs[jobs] = place.Empty($"batch-{size}-j{jobs}", run), "--jobs", Text(jobs), "--quiet"])));
                 if (cores > 1)
                     checks.Add(new Check($"batch output byte-identical, --jobs 1 vs --jobs {cores} ({dat}, {output})", OutputComparison.Differences(outputs[1], outputs[cores], [])));
                 return outputs;
@@ -229,6 +230,29 @@ public static class BenchHarness
         }
         log.WriteLine();
         return new Timing(name, size, jobs, seconds, peaks, cpu, how, output);
+    }
+
+    /// <summary>
+    /// As <see cref="Measure"/> for one workload at several job counts, the counts taking turns: each warmed once,
+    /// then repetition i of every count before repetition i + 1 of any, so a slow stretch of the machine slows
+    /// them alike instead of whichever count ran through it alone.
+    /// </summary>
+    private static IReadOnlyList<Timing> MeasureInterleaved(TextWriter log, HarnessOptions options, string name, string size, IReadOnlyList<int> jobCounts, string output,
+        Func<int, string> how, Func<int, int, ProcessRunner.Outcome> run)
+    {
+        log.Write($"{name} ({size}, {string.Join(" and ", jobCounts)} job(s) in turn, output: {output}): warm-up, then");
+        foreach (var jobs in jobCounts) run(jobs, -1);
+        var outcomes = jobCounts.ToDictionary(jobs => jobs, _ => new List<ProcessRunner.Outcome>());
+        for (var i = 0; i < options.Repetitions; i++)
+            foreach (var jobs in jobCounts)
+            {
+                var outcome = run(jobs, i);
+                outcomes[jobs].Add(outcome);
+                log.Write(string.Create(CultureInfo.InvariantCulture, $" j{jobs} {outcome.Seconds:0.000}s"));
+            }
+        log.WriteLine();
+        return [.. jobCounts.Select(jobs => new Timing(name, size, jobs, [.. outcomes[jobs].Select(o => o.Seconds)], [.. outcomes[jobs].Select(o => o.PeakMiB)],
+            [.. outcomes[jobs].Select(o => o.CpuSeconds).Where(double.IsFinite)], how(jobs), output))];
     }
 
     /// <summary>The bench's own entry assembly, run again as a child process for the floor.</summary>
