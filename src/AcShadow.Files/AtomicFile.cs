@@ -25,14 +25,7 @@ public static class AtomicFile
         var temp = TemporaryFor(full);
         try
         {
-            using (var handle = CreateTemporary(temp))
-            {
-                // One positional write: no stream buffer, seek or truncate of a file just created (a batch
-                // writes tens of thousands). Not File.WriteAllBytes: it preallocates the length first, and a
-                // file the file system cannot hold then fails as an ArgumentException, not the write's I/O error.
-                RandomAccess.Write(handle, content, 0);
-                if (durability == Durability.Flushed) RandomAccess.FlushToDisk(handle);
-            }
+            WriteTemporary(temp, content, durability);
             Replace(temp, full);
             return content.Length;
         }
@@ -41,6 +34,51 @@ public static class AtomicFile
             TryDelete(temp);
             throw;
         }
+    }
+
+    /// <summary>
+    /// Writes <paramref name="content"/> to <paramref name="path"/> where nothing is expected to be, the same way
+    /// (temporary file, then rename), but without looking at the path first: on Linux the rename itself refuses
+    /// to replace anything (<c>renameat2</c> with <c>RENAME_NOREPLACE</c>), so whatever is there (a file, a link,
+    /// a FIFO) stays as it is and the temporary file is removed. Returns the length written, or null when
+    /// something was there: the caller then decides, with <see cref="Write(string, ReadOnlySpan{byte}, Durability)"/>'s
+    /// checks, whether to replace it. For a run writing many new files into one folder: every look at a name
+    /// not yet in the folder takes the folder's lock in the kernel, which a second writer then waits for.
+    /// </summary>
+    public static long? WriteNew(string path, ReadOnlySpan<byte> content, Durability durability)
+    {
+        var full = Path.GetFullPath(path);
+        var temp = TemporaryFor(full);
+        try
+        {
+            WriteTemporary(temp, content, durability);
+            var moved = ExclusiveRename.Move(temp, full);
+            // A platform or file system that cannot rename without replacing: a look, then the rename Write makes.
+            if (moved is null && FileKinds.Of(full) == FileKind.Missing)
+            {
+                Replace(temp, full);
+                moved = true;
+            }
+            if (moved == true) return content.Length;
+            TryDelete(temp);
+            return null;
+        }
+        catch
+        {
+            TryDelete(temp);
+            throw;
+        }
+    }
+
+    /// <summary>The bytes in a new temporary file, flushed when <paramref name="durability"/> says so.</summary>
+    private static void WriteTemporary(string temp, ReadOnlySpan<byte> content, Durability durability)
+    {
+        using var handle = CreateTemporary(temp);
+        // One positional write: no stream buffer, seek or truncate of a file just created (a batch
+        // writes tens of thousands). Not File.WriteAllBytes: it preallocates the length first, and a
+        // file the file system cannot hold then fails as an ArgumentException, not the write's I/O error.
+        RandomAccess.Write(handle, content, 0);
+        if (durability == Durability.Flushed) RandomAccess.FlushToDisk(handle);
     }
 
     /// <summary>As <see cref="Write(string, ReadOnlySpan{byte}, Durability)"/>, for content <paramref name="write"/> streams (in large chunks: the stream is unbuffered).</summary>

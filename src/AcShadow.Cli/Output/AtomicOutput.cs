@@ -11,13 +11,20 @@ namespace AcShadow.Cli.Output;
 public static class AtomicOutput
 {
     public static long Write(string root, string relativePath, ReadOnlyMemory<byte> content) =>
-        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, content.Span, Durability.Renamed));
+        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, content.Span, Durability.Renamed))!.Value;
 
     /// <summary>For content <paramref name="write"/> streams in large chunks.</summary>
     public static long Write(string root, string relativePath, Action<Stream> write) =>
-        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, write, Durability.Renamed));
+        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.Write(target, write, Durability.Renamed))!.Value;
 
-    private static long Guarded(string root, string target, Func<string, long> write)
+    /// <summary>
+    /// A file where nothing is expected (<see cref="AtomicFile.WriteNew"/>): the bytes written, or null when
+    /// something is at the path, which is then left as it is.
+    /// </summary>
+    public static long? WriteNew(string root, string relativePath, ReadOnlyMemory<byte> content) =>
+        Guarded(root, OutputPaths.Target(root, relativePath), target => AtomicFile.WriteNew(target, content.Span, Durability.Renamed));
+
+    private static long? Guarded(string root, string target, Func<string, long?> write)
     {
         // The run's ledger (when it keeps one) knows each write in flight, so a signal can stop the run
         // without leaving its temporary file, and counts what was written whole.
@@ -28,7 +35,7 @@ public static class AtomicOutput
         try
         {
             written = write(target);
-            return written.Value;
+            return written;
         }
         catch (NotARegularFileException e)
         {

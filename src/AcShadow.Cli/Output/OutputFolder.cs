@@ -102,6 +102,14 @@ public sealed class OutputFolder : IDisposable
         return AtomicOutput.Write(Root, relativePath, content);
     }
 
+    /// <summary>
+    /// Writes one file whole where nothing is expected to be, without looking first (<see cref="AtomicFile.WriteNew"/>):
+    /// the bytes written, or null when something is at the path, left as it is: the caller then asks
+    /// <see cref="IsUnchanged"/> and <see cref="Write(string, ReadOnlyMemory{byte})"/> as for any file. No dat this run
+    /// reads can be lost here: nothing that exists is replaced.
+    /// </summary>
+    public long? WriteNew(string relativePath, ReadOnlyMemory<byte> content) => AtomicOutput.WriteNew(Root, relativePath, content);
+
     /// <summary>Writes one file whole from content <paramref name="write"/> streams in large chunks; the bytes written.</summary>
     public long Write(string relativePath, Action<Stream> write)
     {
