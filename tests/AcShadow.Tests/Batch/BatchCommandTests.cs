@@ -1,4 +1,5 @@
 using System.Security.Cryptography;
+using System.Text;
 using System.Text.Json;
 using AcShadow.Core.Catalog;
 using AcShadow.Tests.Support;
@@ -131,6 +132,29 @@ public class BatchCommandTests
             // part-way never leaves an index its files contradict, and written again at the end.
             Assert.Contains($"files: 2 written", second.Out);
             Assert.Contains($"{total - 2} unchanged and left alone", second.Out);
+        }
+    }
+
+    [Fact]
+    public void Into_an_empty_folder_and_into_one_that_holds_a_file_a_batch_writes_the_same_bytes_and_no_temporary()
+    {
+        // An empty folder takes the way without a look at each path first; one holding a file, the checked way.
+        var (fresh, empty) = RunBatch("--doors", "--all", "--landblock", "0xA9B4", "--jobs", "2");
+        using var held = new TempDir();
+        File.WriteAllText(Path.Combine(held.Path, "notes.txt"), "mine");
+        var checkedRun = CliRun.Of("batch", "--out", held.Path, "--doors", "--all", "--landblock", "0xA9B4", "--jobs", "2");
+        using (empty)
+        {
+            Assert.Equal(0, fresh.ExitCode);
+            Assert.Equal(0, checkedRun.ExitCode);
+            var first = ReadAll(empty);
+            var second = ReadAll(held);
+            Assert.Equal("mine", Encoding.UTF8.GetString(second["notes.txt"]));
+            second.Remove("notes.txt");
+            Assert.Equal(first.Keys.Order(), second.Keys.Order());
+            foreach (var (path, bytes) in first) Assert.True(bytes.AsSpan().SequenceEqual(second[path]), $"{path} differs");
+            Assert.DoesNotContain(first.Keys, path => path.EndsWith(".tmp", StringComparison.Ordinal));
+            Assert.Contains($"files: {first.Count} written", fresh.Out);
         }
     }
 

@@ -10,7 +10,7 @@ namespace AcShadow.Tests.Errors;
 /// </summary>
 public class SpecialFileTests
 {
-    private static void MakeFifo(string path)
+    internal static void MakeFifo(string path)
     {
         var (code, _, error) = BuiltCli.RunShell([], $"mkfifo '{path}'");
         Assert.True(code == 0, error);
