@@ -221,7 +221,8 @@ internal static class SceneCompiler
 
     /// <summary>
     /// Every placed object with a model, in landblock space, answered by the model <paramref name="pick"/>
-    /// gives behind a bounding sphere around that model's own shapes — or, <paramref name="partsApart"/> (the
+    /// gives behind a bounding sphere around that model's own shapes (the mover's radius stretched for a cylinder's
+    /// box profile, <see cref="BoundStretch"/>) — or, <paramref name="partsApart"/> (the
     /// compiled scene), each posed part behind its own (<see cref="PlacedParts"/>) — and every cell by its retail
     /// tree (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell); with <paramref name="grids"/>, every
     /// tree asked through its <see cref="BspReachGrid"/>s, as the fixtures library's compiled scene asks it.
@@ -242,7 +243,7 @@ internal static class SceneCompiler
             if (grids is not null && query is ObjectOverlapQuery parts && !indexed.TryGetValue(parts, out query))
                 indexed[parts] = query = parts.Indexed(grids);
             if (!partsApart)
-                yield return (new PlacedQuery(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, query, center, radius), model);
+                yield return (new PlacedQuery(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, query, center, radius, BoundStretch.Of(query)), model);
             else
                 foreach (var part in PlacedParts.Of(o.Index, o.Id, o.Frame.Position, o.Frame.Rotation, query, center, radius))
                     yield return (part, model);

@@ -36,10 +36,9 @@ internal static class SceneCost
         var entries = SceneCompiler.Entries(placed, compiled, pick, partsApart).ToArray();
         var objects = entries.Select(e =>
         {
-            var (bound, radius) = e.Entry.LandblockBound;
             IReadOnlyList<PreparedShape> shapes = e.Entry.Shapes is { } asked ? [.. asked.Select(i => e.Model.Shapes[i])] : e.Model.Shapes;
             // A part registered apart is asked behind its reach already (its landblock bound), not again.
-            return new ObjectCounter(e.Entry.Frame, e.Entry.FrameKey, e.Entry.Whole?.LandblockBound, bound, radius, new QueryCost.Counter(shapes, partReach: e.Entry.Shapes is null, grids));
+            return new ObjectCounter(e.Entry, new QueryCost.Counter(shapes, partReach: e.Entry.Shapes is null, grids));
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)], grids: grids))).ToArray();
@@ -72,7 +71,8 @@ internal static class SceneCost
         }
     }
 
-    private sealed record ObjectCounter(PartPose Frame, object FrameKey, (Vector3 Center, float Radius)? Whole, Vector3 Bound, float Radius, QueryCost.Counter Counter);
+    /// <summary>An entry and its model's counter; its sphere tests are the entry's own (<see cref="PlacedQuery.Near"/>, the mover's radius stretched as the query stretches it).</summary>
+    private sealed record ObjectCounter(PlacedQuery Entry, QueryCost.Counter Counter);
 
     /// <summary>One position's count along a walk (<paramref name="cellReach"/> null: the exhaustive walk, which turns into every cell).</summary>
     private struct Counting(ObjectCounter[] objects, (PartPose Frame, QueryCost.Counter Counter)[] cells, CellReach[]? cellReach, Vector3 center, float radius) : LandCellPartition.IEntryTest
@@ -99,33 +99,27 @@ internal static class SceneCost
                 Ops += counter.Count(cellLocal, cellRadius, out var cellBlocked);
                 return cellBlocked;
             }
-            var o = objects[entry];
+            var (o, model) = objects[entry];
             if (!ReferenceEquals(o.FrameKey, _frame)) (_frame, _whole, _turned) = (o.FrameKey, 0, false);
             if (o.Whole is { } whole)
             {
                 if (_whole == 0)
                 {
                     Ops++;
-                    _whole = Within(whole.Center, whole.Radius) ? 1 : 2;
+                    _whole = whole.Near(center, radius) ? 1 : 2;
                 }
                 if (_whole == 2) return false;
             }
             Ops++;
-            if (!Within(o.Bound, o.Radius)) return false;
+            if (!o.Near(center, radius)) return false;
             var (local, r) = o.Frame.ToLocal(center, radius);
             if (!_turned) Ops += QueryCost.Transform;
             _turned = true;
-            Ops += o.Counter.Count(local, r, out var blocked);
+            Ops += model.Count(local, r, out var blocked);
             return blocked;
         }
 
         public void Visit() => Ops += LandCellVisit;
-
-        private readonly bool Within(Vector3 bound, float boundRadius)
-        {
-            float dx = center.X - bound.X, dy = center.Y - bound.Y, dz = center.Z - bound.Z, sum = boundRadius + radius;
-            return dx * dx + dy * dy + dz * dz <= sum * sum;
-        }
     }
 
     private static readonly Fixtures.Shapes.ShadowShape CellShape = new(Fixtures.Shapes.ShapeSource.Part, 0, null, Fixtures.Shapes.CollisionType.Bsp,

@@ -15,7 +15,9 @@ namespace AcShadow.Fixtures.Scenes;
 /// r of — check_add_cell_boundary).</item>
 /// </list>
 /// Both footprints are padded (<see cref="Pad"/>) beyond the float rounding of the bound tests the entries
-/// make themselves, so a sphere whose exhaustive bound test passes always shares a land cell with the entry:
+/// make themselves, the mover's radius first stretched by the largest factor an entry's bound test puts on it (a
+/// CylSphere's box profile reaches √2·r past its object's sphere, <see cref="Collision.BoundStretch"/>), so a
+/// sphere whose exhaustive bound test passes always shares a land cell with the entry:
 /// the partition only skips entries that cannot answer, and answers are the exhaustive walk's, bit for bit.
 /// An entry asked in several of the mover's cells is asked once (in the first cell, y then x, of the overlap).
 /// An entry whose bound is missing, not finite or wider than <see cref="MaxSpan"/> cells is asked everywhere.
@@ -35,6 +37,7 @@ internal sealed class LandCellPartition
     private const int MaxReach = 64;
 
     private readonly int _x0, _y0, _width, _height;
+    private readonly float _radiusStretch;
     private readonly int[][] _cells;
     private readonly int[] _everywhere;
     private readonly CellRange[] _footprints;
@@ -69,9 +72,10 @@ internal sealed class LandCellPartition
     /// <summary>How many land cells hold at least one entry.</summary>
     public int OccupiedCells => _cells.Count(c => c.Length > 0);
 
-    private LandCellPartition(int x0, int y0, int width, int height, int[][] cells, int[] everywhere, CellRange[] footprints)
+    private LandCellPartition(int x0, int y0, int width, int height, int[][] cells, int[] everywhere, CellRange[] footprints, float radiusStretch)
     {
         (_x0, _y0, _width, _height) = (x0, y0, width, height);
+        _radiusStretch = radiusStretch;
         _cells = cells;
         _everywhere = everywhere;
         _footprints = footprints;
@@ -115,10 +119,13 @@ internal sealed class LandCellPartition
 
     /// <summary>
     /// The partition of entries with these landblock-relative bounds (null: asked everywhere). Entry order is
-    /// kept within every cell's list.
+    /// kept within every cell's list. <paramref name="radiusStretch"/>: the largest factor any entry's bound test puts
+    /// on the mover's radius (<see cref="PlacedQuery.RadiusStretch"/>); a mover's range is padded by its radius times it.
     /// </summary>
-    public static LandCellPartition Build(IReadOnlyList<(Vector3 Center, float Radius)?> bounds)
+    public static LandCellPartition Build(IReadOnlyList<(Vector3 Center, float Radius)?> bounds, float radiusStretch = 1f)
     {
+        if (!(radiusStretch >= 1f) || !float.IsFinite(radiusStretch))
+            throw new ArgumentOutOfRangeException(nameof(radiusStretch), radiusStretch, "a radius stretch is finite and at least 1");
         var footprints = new CellRange[bounds.Count];
         var everywhere = new List<int>();
         int x0 = int.MaxValue, y0 = int.MaxValue, x1 = int.MinValue, y1 = int.MinValue;
@@ -133,7 +140,7 @@ internal sealed class LandCellPartition
             footprints[i] = f;
             (x0, y0, x1, y1) = (Math.Min(x0, f.X0), Math.Min(y0, f.Y0), Math.Max(x1, f.X1), Math.Max(y1, f.Y1));
         }
-        if (x0 > x1) return new LandCellPartition(0, 0, 0, 0, [], [.. everywhere], footprints);
+        if (x0 > x1) return new LandCellPartition(0, 0, 0, 0, [], [.. everywhere], footprints, radiusStretch);
         int width = x1 - x0 + 1, height = y1 - y0 + 1;
         var lists = new List<int>[width * height];
         for (var i = 0; i < footprints.Length; i++)
@@ -144,7 +151,7 @@ internal sealed class LandCellPartition
                 for (var x = f.X0; x <= f.X1; x++)
                     (lists[(y - y0) * width + (x - x0)] ??= []).Add(i);
         }
-        return new LandCellPartition(x0, y0, width, height, [.. lists.Select(l => l is null ? [] : l.ToArray())], [.. everywhere], footprints);
+        return new LandCellPartition(x0, y0, width, height, [.. lists.Select(l => l is null ? [] : l.ToArray())], [.. everywhere], footprints, radiusStretch);
     }
 
     /// <summary>
@@ -187,7 +194,7 @@ internal sealed class LandCellPartition
     {
         cells = default;
         if (_width == 0 || !float.IsFinite(center.X) || !float.IsFinite(center.Y) || !float.IsFinite(radius) || radius < 0f) return false;
-        var pad = Pad(radius);
+        var pad = Pad(radius * _radiusStretch);
         double fx0 = Math.Floor((center.X - pad) / CellSize), fx1 = Math.Floor((center.X + pad) / CellSize);
         double fy0 = Math.Floor((center.Y - pad) / CellSize), fy1 = Math.Floor((center.Y + pad) / CellSize);
         int gx1 = _x0 + _width - 1, gy1 = _y0 + _height - 1;

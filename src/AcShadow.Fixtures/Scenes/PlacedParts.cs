@@ -6,7 +6,8 @@ namespace AcShadow.Fixtures.Scenes;
 /// <summary>
 /// A placed object as the compiled scene registers it: each posed part (a BSP tree, box or hull) its own entry
 /// behind the part's reach (<see cref="PosedQuery.Reach"/>, moved into the landblock by the object's frame), the
-/// object's other shapes (spheres, cylinders, parts without a bound) together behind the object's sphere; every entry
+/// object's other shapes (spheres, cylinders, parts without a bound) together behind the object's sphere (the mover's
+/// radius stretched where a cylinder's box profile reaches past it, <see cref="BoundStretch"/>); every entry
 /// keeps the object's sphere too, asked first and once (<see cref="PlacedQuery.Whole"/>). A mover
 /// then meets only the parts it is near, where the client asks every part of every object registered in its cells
 /// (CObjCell::find_obj_collisions → CPhysicsObj::FindObjCollisions → CPartArray). Each entry turns the sphere into
@@ -18,7 +19,7 @@ internal static class PlacedParts
     public static IEnumerable<PlacedQuery> Of(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius)
     {
         var parts = PartsOf(entityQuery);
-        var whole = new PlacedQuery(index, id, position, rotation, entityQuery, boundCenter, boundRadius);
+        var whole = new PlacedQuery(index, id, position, rotation, entityQuery, boundCenter, boundRadius, BoundStretch.Of(entityQuery));
         var frame = new object();
         var rest = new List<int>();
         for (var i = 0; i < parts.Count; i++)
@@ -32,7 +33,10 @@ internal static class PlacedParts
         if (rest.Count == parts.Count)
             yield return whole;
         else if (rest.Count > 0)
-            yield return new PlacedQuery(index, id, position, rotation, new AnyOverlap([.. rest.Select(i => parts[i])]), boundCenter, boundRadius) { Shapes = rest, FrameKey = frame, Whole = whole };
+        {
+            var others = new AnyOverlap([.. rest.Select(i => parts[i])]);
+            yield return new PlacedQuery(index, id, position, rotation, others, boundCenter, boundRadius, BoundStretch.Of(others)) { Shapes = rest, FrameKey = frame, Whole = whole };
+        }
     }
 
     /// <summary>An object query's shapes, one query each in shape order, or the query itself when it is not made of shapes.</summary>

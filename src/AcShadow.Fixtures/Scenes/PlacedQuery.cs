@@ -28,7 +28,7 @@ internal sealed class PlacedQuery
     /// <summary>Which of the object's shapes (in its model's order) <see cref="EntityQuery"/> asks; null: all of them.</summary>
     public IReadOnlyList<int>? Shapes { get; init; }
 
-    /// <summary>An object (or one part of it) behind an entity-space bound; <paramref name="radiusStretch"/> is the factor the bound puts on the query radius (<see cref="PartReach.Stretch"/>; 1 for a plain sphere).</summary>
+    /// <summary>An object (or one part of it) behind an entity-space bound; <paramref name="radiusStretch"/> is the factor the bound puts on the query radius (<see cref="PartReach.Stretch"/>; <see cref="BoundStretch"/> for an object's sphere, √2 with a cylinder; 1 for a plain sphere).</summary>
     public PlacedQuery(int index, uint id, Vector3 position, Quaternion rotation, ISphereOverlap entityQuery, Vector3 boundCenter, float boundRadius, float radiusStretch = 1f)
     {
         Index = index;
@@ -50,8 +50,11 @@ internal sealed class PlacedQuery
         _reach = (float)(boundRadius + off * (boundRadius + fromOrigin));
     }
 
-    /// <summary>The bounding sphere in the landblock's frame, as <see cref="Overlaps"/> tests it first.</summary>
+    /// <summary>The bounding sphere in the landblock's frame, as <see cref="Overlaps"/> tests it first (with the mover's radius times <see cref="RadiusStretch"/>).</summary>
     public (Vector3 Center, float Radius) LandblockBound => (_boundInLandblock, BoundRadius);
+
+    /// <summary>The factor <see cref="Near"/> puts on the mover's radius (at least 1): a partition pads a mover's range by it.</summary>
+    public float RadiusStretch => _stretch;
 
     /// <summary>
     /// Entries that share this key stand in the same frame (the parts of one object, <see cref="PlacedParts"/>): a walk

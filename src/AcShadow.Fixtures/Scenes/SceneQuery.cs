@@ -25,7 +25,8 @@ internal sealed class SceneQuery : ISphereOverlap
         _objects = [.. objects];
         _cells = [.. cells ?? []];
         _cellReach = [.. _cells.Select(c => CellReach.Of(c.Query.Bound))];
-        Partition = LandCellPartition.Build([.. _objects.Select(o => ((Vector3, float)?)o.LandblockBound), .. _cells.Select(c => c.Query.Bound)]);
+        Partition = LandCellPartition.Build([.. _objects.Select(o => ((Vector3, float)?)o.LandblockBound), .. _cells.Select(c => c.Query.Bound)],
+            _objects.Aggregate(1f, (most, o) => MathF.Max(most, o.RadiusStretch)));
         Exhaustive = new ExhaustiveWalk(_objects, _cells);
     }
 

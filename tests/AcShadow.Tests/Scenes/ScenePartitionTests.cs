@@ -130,6 +130,29 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     }
 
     [Fact]
+    public void A_stretched_entry_is_asked_by_a_mover_whose_stretched_radius_reaches_its_land_cell()
+    {
+        // A bound 1 m wide whose footprint ends in cell 0 (x < 24); a 1.5 m mover 0.4 m into cell 1 beyond the
+        // range r alone pads (1.5 · 1.001 + 0.05). With the stretch √2 (a CylSphere's box profile) its range
+        // reaches back into cell 0, and the entry is asked.
+        (Vector3, float)?[] bounds = [(new Vector3(22.9f, 10f, 0f), 1f)];
+        var at = new Vector3(24f + 1.5f * 1.001f + 0.05f + 0.4f, 10f, 0f);
+        var plain = LandCellPartition.Build(bounds);
+        Assert.False(plain.Reaches(0, at, 1.5f));
+        var stretched = LandCellPartition.Build(bounds, BoundStretch.Cylinder);
+        Assert.True(stretched.Reaches(0, at, 1.5f));
+        Assert.True(stretched.Reach(at, 1.5f, out var cells));
+        // The grid holds cell 0 alone (the only footprint), so the range is clamped to it.
+        Assert.Equal(new LandCellPartition.CellRange(0, 0, 0, 0), cells);
+        var asked = new Asked();
+        stretched.Any(at, 1.5f, ref asked);
+        Assert.Equal(new[] { 0 }, asked.Entries);
+        // 1.2 m further out, past the stretched pad (2.17 m) as well, cell 0 is not asked.
+        Assert.False(stretched.Reaches(0, at + new Vector3(1.2f, 0f, 0f), 1.5f));
+        Assert.Throws<ArgumentOutOfRangeException>(() => LandCellPartition.Build(bounds, 0.5f));
+    }
+
+    [Fact]
     public void A_range_s_flat_candidates_are_the_cell_walk_s_entries_in_its_order_each_once()
     {
         // Bounds of every size over and around a landblock; movers from a centimetre to beyond a cell (the
