@@ -208,9 +208,9 @@ internal static class QueryCost
             for (var i = 0; i < items.Length;)
             {
                 var item = items[i++];
-                if (BspReachGrid.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
-                else if (BspReachGrid.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
-                else if (BspReachGrid.IsGuard(item, out var guard))
+                if (BspBoxWalk.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
+                else if (BspBoxWalk.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
+                else if (BspBoxWalk.IsGuard(item, out var guard))
                 {
                     ops++;
                     var length = items[i++];

@@ -1,0 +1,359 @@
+using System.Numerics;
+using AcShadow.Fixtures.Geometry;
+
+namespace AcShadow.Fixtures.Collision;
+
+/// <summary>
+/// <see cref="BspSphereQuery.Overlaps"/> for one radius run over a box of centres (<see cref="CentreBox"/>) with
+/// interval arithmetic: what the walk decides the same way for every centre of the box is taken, what it does not is
+/// left as a frontier, a small program (<see cref="Run"/>) of guards over blocks (the node's sphere test or its push
+/// of one child: the walk's own float test), single listed polygons, and nodes walked from there where the centre
+/// check would depend on the centre's side. The walk's answer is an OR over what it reaches and a reached node's
+/// subtree answers independently of the rest, so running the frontier at a centre of the box gives the walk's answer
+/// bit for bit, for any tree however malformed. Every comparison is padded by a bound on the float rounding of the
+/// walk's evaluation; a decision that could go either way stays open. <see cref="BspReachGrid"/> settles the voxels of
+/// a part-local grid with it, <see cref="Scenes.SceneReachGrid"/> the voxels of a whole scene.
+/// </summary>
+internal sealed class BspBoxWalk
+{
+    // A frontier item: payload << 2 | tag. Node: payload node << 1 | centre check, walked from there. Polygon:
+    // payload the listed-polygon entry. Guard: payload node << 2 | kind, then the length of the block it guards,
+    // skipped when the guard fails. True: blocks.
+    private const int NodeTag = 0, PolygonTag = 1, GuardTag = 2, TrueItem = 3;
+    private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2;
+
+    /// <summary>Relative bound on the float rounding of a squared distance or of R + r squared, with room to spare.</summary>
+    private const double SquareSlack = 4e-6;
+    private const double Tiny = 1e-30;
+    /// <summary>Past this magnitude a float evaluation may overflow: the decision is left to the walk.</summary>
+    private const double Huge = 1e30;
+
+    private readonly CompiledBspNode[] _nodes;
+    private readonly Vector4[] _planes;
+    private readonly Vector4[] _spheres;
+    private readonly float _radius;
+    private readonly double _reach;
+    private readonly long[] _subtreeCost;
+    private readonly List<int> _scratch = [];
+
+    /// <summary>What a box settles to: clear (no items), blocked, or a frontier; guarded: the root's broad phase is asked first.</summary>
+    public enum Outcome { Clear, Blocked, Frontier }
+
+    /// <param name="Outcome">Clear, blocked (behind the broad phase when guarded), or a frontier.</param>
+    /// <param name="Items">The frontier's program (empty unless <see cref="Outcome.Frontier"/>).</param>
+    /// <param name="Guarded">The root's broad phase is not decided over the box: asked before the items (a guarded block answers by it alone).</param>
+    /// <param name="Cost">Nodes and polygons a walk of the frontier would look at, at most.</param>
+    public readonly record struct Settled(Outcome Outcome, int[] Items, bool Guarded, long Cost);
+
+    public BspBoxWalk(BspSphereQuery tree, float radius)
+    {
+        _nodes = tree.Nodes.ToArray();
+        _planes = tree.LeafPlanes.ToArray();
+        _spheres = tree.LeafSpheres.ToArray();
+        _radius = radius;
+        _reach = radius - PhysicsEpsilon.Value;
+        _subtreeCost = new long[_nodes.Length];
+        for (var i = _nodes.Length - 1; i >= 0; i--)
+        {
+            var node = _nodes[i];
+            _subtreeCost[i] = 1 + (node.IsLeaf ? node.PolygonCount
+                : (node.Pos >= 0 ? _subtreeCost[node.Pos] : 0) + (node.Neg >= 0 ? _subtreeCost[node.Neg] : 0));
+        }
+    }
+
+    public float Radius => _radius;
+
+    /// <summary>A program that blocks (behind the broad phase when guarded): what a blocked box runs as a frontier.</summary>
+    public static int[] Blocks => [TrueItem];
+
+    /// <summary>
+    /// The walk over a box, from the root (<paramref name="parent"/> null: the broad phase and the whole tree) or
+    /// from an enclosing box's frontier (a decision uniform over the enclosing box stays so over this one).
+    /// </summary>
+    public Settled Settle(in CentreBox box, int[]? parent = null, bool parentGuarded = true)
+    {
+        if (_nodes.Length == 0) return new Settled(Outcome.Clear, [], false, 0);
+        _scratch.Clear();
+        var guarded = false;
+        if (parentGuarded)
+        {
+            var broad = BroadPhase(_nodes[0], box);
+            if (broad == BoxDecision.False) return new Settled(Outcome.Clear, [], false, 0);
+            guarded = broad == BoxDecision.Mixed;
+        }
+        var blocked = parent is null ? Visit(0, true, box) : Replay(parent, 0, parent.Length, box);
+        if (blocked) return new Settled(Outcome.Blocked, [], guarded, guarded ? 1 : 0);
+        if (_scratch.Count == 0) return new Settled(Outcome.Clear, [], false, 0);
+        int[] items = [.. _scratch];
+        long cost = guarded ? 1 : 0;
+        for (var i = 0; i < items.Length; i++)
+        {
+            cost += IsNodeItem(items[i], out var node, out _) ? _subtreeCost[node] : 1;
+            if (IsGuard(items[i], out _)) i++;
+        }
+        return new Settled(Outcome.Frontier, items, guarded, cost);
+    }
+
+    /// <summary>
+    /// A settled frontier at a centre of its box: <see cref="BspSphereQuery.Overlaps"/>'s answer there. Guarded: the
+    /// root's broad phase first; a guarded frontier without items blocks when it passes.
+    /// </summary>
+    public static bool Run(BspSphereQuery tree, ReadOnlySpan<int> items, bool guarded, Vector3 center, float radius)
+    {
+        var nodes = tree.Nodes;
+        if (guarded && !SphereBounds.BroadPhaseHits(nodes[0], center, radius)) return false;
+        if (items.IsEmpty) return guarded;
+        var reach = radius - PhysicsEpsilon.Value;
+        for (var i = 0; i < items.Length;)
+        {
+            var item = items[i++];
+            switch (item & 3)
+            {
+                case NodeTag:
+                    if (tree.WalkFrom(item >> 3, (item & 4) != 0, center, radius, reach)) return true;
+                    break;
+                case PolygonTag:
+                    if (tree.EntryTouches(item >> 2, center, radius, reach)) return true;
+                    break;
+                case GuardTag:
+                    var length = items[i++];
+                    if (!Passes(nodes, item >> 2, center, radius, reach)) i += length;
+                    break;
+                default:
+                    return true;
+            }
+        }
+        return false;
+    }
+
+    /// <summary>A guard as the walk decides it at this centre: the node's sphere test, or whether it pushes that child.</summary>
+    internal static bool Passes(ReadOnlySpan<CompiledBspNode> nodes, int guard, Vector3 center, float radius, float reach)
+    {
+        ref readonly var node = ref nodes[guard >> 2];
+        if ((guard & 3) == SphereGuard) return SphereBounds.NodeSphereHits(node, center, radius);
+        var dist = PolygonPlane.Dot(node.Normal, center) + node.D;
+        return (guard & 3) == PushesPosGuard ? dist >= reach || !(dist <= -reach) : !(dist >= reach);
+    }
+
+    internal static bool IsNodeItem(int item, out int node, out bool centreCheck)
+    {
+        node = item >> 3;
+        centreCheck = (item & 4) != 0;
+        return (item & 3) == NodeTag;
+    }
+
+    internal static bool IsPolygonItem(int item, out int entry)
+    {
+        entry = item >> 2;
+        return (item & 3) == PolygonTag;
+    }
+
+    /// <summary>A guard item: the guard to ask (<see cref="Passes"/>); the next int is the length of the block to skip when it fails.</summary>
+    internal static bool IsGuard(int item, out int guard)
+    {
+        guard = item >> 2;
+        return (item & 3) == GuardTag;
+    }
+
+    /// <summary>
+    /// A parent's frontier over a child's box: each node walked again as <see cref="Visit"/> walks it, each polygon
+    /// tested again, each guard decided again (a block whose guard now always passes is inlined, one that never
+    /// passes dropped). True when what is replayed blocks for every centre under the guards open around it.
+    /// </summary>
+    private bool Replay(int[] program, int from, int to, in CentreBox box)
+    {
+        for (var i = from; i < to;)
+        {
+            var item = program[i++];
+            if (IsNodeItem(item, out var node, out var centreCheck)) { if (Visit(node, centreCheck, box)) return true; }
+            else if (IsPolygonItem(item, out var entry)) { if (!PolygonSkipped(entry, box)) _scratch.Add(item); }
+            else if (IsGuard(item, out var guard))
+            {
+                var end = i + 1 + program[i];
+                i++;
+                switch (GuardOver(guard, box))
+                {
+                    case BoxDecision.True:
+                        if (Replay(program, i, end, box)) return true;
+                        break;
+                    case BoxDecision.Mixed:
+                        var mark = Open(guard);
+                        Close(mark, Replay(program, i, end, box));
+                        break;
+                }
+                i = end;
+            }
+            else return true;
+        }
+        return false;
+    }
+
+    private BoxDecision GuardOver(int guard, in CentreBox box)
+    {
+        var node = _nodes[guard >> 2];
+        if ((guard & 3) == SphereGuard) return SphereHits(node.SphereCenter, node.SphereRadius, box);
+        var (atLeast, atMost) = Pushes(node, box);
+        return (guard & 3) == PushesPosGuard ? atLeast : atMost;
+    }
+
+    /// <summary>Whether the walk pushes the positive child (dist ≥ reach or not dist ≤ −reach) and the negative one (not dist ≥ reach), over the box.</summary>
+    private (BoxDecision Pos, BoxDecision Neg) Pushes(in CompiledBspNode node, in CentreBox box)
+    {
+        var (min, max) = PlaneRange(node.Normal, node.D, box);
+        var positive = Compare(min, max, _reach, atLeast: true);
+        var negative = Compare(min, max, -_reach, atLeast: false);
+        return (Or(positive, Not(negative)), Not(positive));
+    }
+
+    private static BoxDecision Not(BoxDecision t) => t switch { BoxDecision.True => BoxDecision.False, BoxDecision.False => BoxDecision.True, _ => BoxDecision.Mixed };
+
+    private static BoxDecision Or(BoxDecision a, BoxDecision b) =>
+        a == BoxDecision.True || b == BoxDecision.True ? BoxDecision.True : a == BoxDecision.False && b == BoxDecision.False ? BoxDecision.False : BoxDecision.Mixed;
+
+    /// <summary>Starts a guarded block: the guard, then its length, filled in by <see cref="Close"/>.</summary>
+    private int Open(int guard)
+    {
+        var mark = _scratch.Count;
+        _scratch.Add(guard << 2 | GuardTag);
+        _scratch.Add(0);
+        return mark;
+    }
+
+    /// <summary>Ends a guarded block: one that blocks whenever its guard passes becomes just that; an empty one is dropped.</summary>
+    private void Close(int mark, bool blocks)
+    {
+        if (blocks)
+        {
+            _scratch.RemoveRange(mark + 2, _scratch.Count - mark - 2);
+            _scratch.Add(TrueItem);
+        }
+        var length = _scratch.Count - mark - 2;
+        if (length == 0) _scratch.RemoveRange(mark, 2);
+        else _scratch[mark + 1] = length;
+    }
+
+    /// <summary>
+    /// The walk of <see cref="BspSphereQuery.Overlaps"/> below one node over a box, the same decisions in the same
+    /// order: true when it reaches a solid leaf with its centre check on for every centre under the guards open
+    /// around it; what it cannot decide goes to <see cref="_scratch"/> as guards over blocks, polygons, or the
+    /// node itself where its children's centre checks would depend on the centre's side of its plane.
+    /// </summary>
+    private bool Visit(int index, bool centreCheck, in CentreBox box)
+    {
+        var node = _nodes[index];
+        var sphere = node.IsLeaf && node.ListedPolygonCount == 0 ? BoxDecision.False : SphereHits(node.SphereCenter, node.SphereRadius, box);
+        if (node.IsLeaf)
+        {
+            if (node.ListedPolygonCount == 0) return false;
+            if (centreCheck && node.Solid) return true;
+            if (sphere == BoxDecision.False) return false;
+            var leafGuard = sphere == BoxDecision.Mixed ? Open(index << 2 | SphereGuard) : -1;
+            for (var k = 0; k < node.PolygonCount; k++)
+                if (!PolygonSkipped(node.PolygonStart + k, box)) _scratch.Add((node.PolygonStart + k) << 2 | PolygonTag);
+            if (leafGuard >= 0) Close(leafGuard, false);
+            return false;
+        }
+        if (sphere == BoxDecision.False) return false;
+        var (min, max) = PlaneRange(node.Normal, node.D, box);
+        var positive = Compare(min, max, _reach, atLeast: true);
+        var negative = Compare(min, max, -_reach, atLeast: false);
+        var below = Compare(min, max, 0.0, atLeast: true) switch { BoxDecision.True => BoxDecision.False, BoxDecision.False => BoxDecision.True, _ => BoxDecision.Mixed };
+        // Guards carry the pushes; the children's centre checks must come out the same wherever they are pushed,
+        // which needs the centre's side settled when the middle band (both children) is reachable with the check on.
+        var middle = positive != BoxDecision.True && negative != BoxDecision.True;
+        if ((_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed)) || (centreCheck && middle && below == BoxDecision.Mixed))
+        {
+            _scratch.Add((index << 1 | (centreCheck ? 1 : 0)) << 2 | NodeTag);
+            return false;
+        }
+        var pushPos = Or(positive, Not(negative));
+        var pushNeg = Not(positive);
+        var posCheck = centreCheck && (positive == BoxDecision.True || below == BoxDecision.False);
+        var negCheck = centreCheck && (negative == BoxDecision.True || below == BoxDecision.True);
+        var nodeGuard = sphere == BoxDecision.Mixed ? Open(index << 2 | SphereGuard) : -1;
+        var blocks = Branch(pushPos, node.Pos, posCheck, index << 2 | PushesPosGuard, box)
+            || Branch(pushNeg, node.Neg, negCheck, index << 2 | PushesNegGuard, box);
+        if (nodeGuard < 0) return blocks;
+        Close(nodeGuard, blocks);
+        return false;
+    }
+
+    /// <summary>One child as the walk pushes it: always, never, or behind its push guard.</summary>
+    private bool Branch(BoxDecision pushed, int child, bool centreCheck, int guard, in CentreBox box)
+    {
+        if (pushed == BoxDecision.False || child < 0) return false;
+        if (pushed == BoxDecision.True) return Visit(child, centreCheck, box);
+        var mark = Open(guard);
+        Close(mark, Visit(child, centreCheck, box));
+        return false;
+    }
+
+    /// <summary>True when LeafTouches rejects the entry for every centre of the box, by its plane or by its bounding sphere.</summary>
+    private bool PolygonSkipped(int entry, in CentreBox box)
+    {
+        var plane = _planes[entry];
+        var (min, max) = PlaneRange(new Vector3(plane.X, plane.Y, plane.Z), plane.W, box);
+        var nearest = min > 0 ? min : max < 0 ? -max : 0.0;
+        if (nearest > _reach) return true;
+        var sphere = _spheres[entry];
+        var sum = sphere.W + _radius;
+        var (lo, _) = box.DistanceSquared(new Vector3(sphere.X, sphere.Y, sphere.Z));
+        return lo * (1 - SquareSlack) - Tiny > (double)sum * sum * (1 + SquareSlack);
+    }
+
+    /// <summary>NodeSphereHits over the box: |Δ|² &lt; (R + r)².</summary>
+    private BoxDecision SphereHits(Vector3 center, float radius, in CentreBox box)
+    {
+        var sum = radius + _radius;
+        var limit = (double)sum * sum;
+        var (lo, hi) = box.DistanceSquared(center);
+        if (!(hi < Huge)) return BoxDecision.Mixed;
+        if (hi * (1 + SquareSlack) + Tiny < limit * (1 - SquareSlack)) return BoxDecision.True;
+        if (lo * (1 - SquareSlack) - Tiny >= limit * (1 + SquareSlack)) return BoxDecision.False;
+        return BoxDecision.Mixed;
+    }
+
+    /// <summary>BroadPhaseHits over the box: |Δ|² − (R + r)² &lt; ε, the subtraction's rounding bounded too.</summary>
+    private BoxDecision BroadPhase(in CompiledBspNode root, in CentreBox box)
+    {
+        var sum = root.SphereRadius + _radius;
+        if (float.IsPositiveInfinity(sum * sum)) return BoxDecision.True;
+        var limit = (double)sum * sum;
+        var (lo, hi) = box.DistanceSquared(root.SphereCenter);
+        if (!(hi < Huge)) return BoxDecision.Mixed;
+        var upper = hi * (1 + SquareSlack) + Tiny - limit * (1 - SquareSlack);
+        if (upper + Math.Abs(upper) * 1e-6 + Tiny < PhysicsEpsilon.Value) return BoxDecision.True;
+        var lower = lo * (1 - SquareSlack) - Tiny - limit * (1 + SquareSlack);
+        if (lower - Math.Abs(lower) * 1e-6 - Tiny >= PhysicsEpsilon.Value) return BoxDecision.False;
+        return BoxDecision.Mixed;
+    }
+
+    /// <summary>dist ≥ value (atLeast) or dist ≤ value over the range of dist.</summary>
+    private static BoxDecision Compare(double min, double max, double value, bool atLeast)
+    {
+        if (atLeast) return min >= value ? BoxDecision.True : max < value ? BoxDecision.False : BoxDecision.Mixed;
+        return max <= value ? BoxDecision.True : min > value ? BoxDecision.False : BoxDecision.Mixed;
+    }
+
+    /// <summary>
+    /// The range of dot(n, c) + d over the box, widened by a bound on the float evaluation's rounding (a few ulps
+    /// of the largest term); unbounded when a term could overflow a float.
+    /// </summary>
+    private static (double Min, double Max) PlaneRange(Vector3 n, float d, in CentreBox box)
+    {
+        double min = d, max = d, scale = Math.Abs((double)d);
+        Term(n.X, box.LoX, box.HiX, ref min, ref max, ref scale);
+        Term(n.Y, box.LoY, box.HiY, ref min, ref max, ref scale);
+        Term(n.Z, box.LoZ, box.HiZ, ref min, ref max, ref scale);
+        if (!(scale < Huge)) return (double.NegativeInfinity, double.PositiveInfinity);
+        var slack = 1e-6 * scale + Tiny;
+        return (min - slack, max + slack);
+    }
+
+    private static void Term(double k, double lo, double hi, ref double min, ref double max, ref double scale)
+    {
+        min += k >= 0 ? k * lo : k * hi;
+        max += k >= 0 ? k * hi : k * lo;
+        scale += Math.Abs(k) * Math.Max(Math.Abs(lo), Math.Abs(hi));
+    }
+}
