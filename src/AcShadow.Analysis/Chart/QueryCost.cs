@@ -210,6 +210,11 @@ internal static class QueryCost
                 var item = items[i++];
                 if (BspBoxWalk.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
                 else if (BspBoxWalk.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
+                else if (BspBoxWalk.IsPlaneItem(item, out entry))
+                {
+                    ops++;
+                    blocked = !(MathF.Abs(bsp.Polygons[bsp.LeafPolygons[entry]].Distance(local)) > reach);
+                }
                 else if (BspBoxWalk.IsGuard(item, out var guard))
                 {
                     ops++;

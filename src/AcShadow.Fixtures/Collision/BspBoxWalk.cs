@@ -18,7 +18,9 @@ internal sealed class BspBoxWalk
 {
     // A frontier item: payload << 2 | tag. Node: payload node << 1 | centre check, walked from there. Polygon:
     // payload the listed-polygon entry. Guard: payload node << 2 | kind, then the length of the block it guards,
-    // skipped when the guard fails. True: blocks.
+    // skipped when the guard fails. Tag 3: payload 0 blocks (True); payload entry + 1 is a plane item, a listed
+    // polygon whose contact point lies inside it and whose bounding sphere is met over the whole box, so only its
+    // plane distance is left to test.
     private const int NodeTag = 0, PolygonTag = 1, GuardTag = 2, TrueItem = 3;
     private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2;
 
@@ -28,6 +30,7 @@ internal sealed class BspBoxWalk
     /// <summary>Past this magnitude a float evaluation may overflow: the decision is left to the walk.</summary>
     private const double Huge = 1e30;
 
+    private readonly BspSphereQuery _tree;
     private readonly CompiledBspNode[] _nodes;
     private readonly Vector4[] _planes;
     private readonly Vector4[] _spheres;
@@ -47,6 +50,7 @@ internal sealed class BspBoxWalk
 
     public BspBoxWalk(BspSphereQuery tree, float radius)
     {
+        _tree = tree;
         _nodes = tree.Nodes.ToArray();
         _planes = tree.LeafPlanes.ToArray();
         _spheres = tree.LeafSpheres.ToArray();
@@ -120,7 +124,8 @@ internal sealed class BspBoxWalk
                     if (!Passes(nodes, item >> 2, center, radius, reach)) i += length;
                     break;
                 default:
-                    return true;
+                    if (item == TrueItem || tree.EntryReachesPlane((item >> 2) - 1, center, reach)) return true;
+                    break;
             }
         }
         return false;
@@ -148,6 +153,13 @@ internal sealed class BspBoxWalk
         return (item & 3) == PolygonTag;
     }
 
+    /// <summary>A plane item: a listed polygon whose test over its box comes down to its plane distance (<see cref="BspSphereQuery.EntryReachesPlane"/>).</summary>
+    internal static bool IsPlaneItem(int item, out int entry)
+    {
+        entry = (item >> 2) - 1;
+        return (item & 3) == TrueItem && item != TrueItem;
+    }
+
     /// <summary>A guard item: the guard to ask (<see cref="Passes"/>); the next int is the length of the block to skip when it fails.</summary>
     internal static bool IsGuard(int item, out int guard)
     {
@@ -166,7 +178,7 @@ internal sealed class BspBoxWalk
         {
             var item = program[i++];
             if (IsNodeItem(item, out var node, out var centreCheck)) { if (Visit(node, centreCheck, box)) return true; }
-            else if (IsPolygonItem(item, out var entry)) { if (!PolygonSkipped(entry, box)) _scratch.Add(item); }
+            else if (IsPolygonItem(item, out var entry) || IsPlaneItem(item, out entry)) { if (Polygon(entry, box)) return true; }
             else if (IsGuard(item, out var guard))
             {
                 var end = i + 1 + program[i];
@@ -248,9 +260,11 @@ internal sealed class BspBoxWalk
             if (centreCheck && node.Solid) return true;
             if (sphere == BoxDecision.False) return false;
             var leafGuard = sphere == BoxDecision.Mixed ? Open(index << 2 | SphereGuard) : -1;
-            for (var k = 0; k < node.PolygonCount; k++)
-                if (!PolygonSkipped(node.PolygonStart + k, box)) _scratch.Add((node.PolygonStart + k) << 2 | PolygonTag);
-            if (leafGuard >= 0) Close(leafGuard, false);
+            var touches = false;
+            for (var k = 0; k < node.PolygonCount && !touches; k++)
+                touches = Polygon(node.PolygonStart + k, box);
+            if (leafGuard < 0) return touches;
+            Close(leafGuard, touches);
             return false;
         }
         if (sphere == BoxDecision.False) return false;
@@ -288,17 +302,57 @@ internal sealed class BspBoxWalk
         return false;
     }
 
-    /// <summary>True when LeafTouches rejects the entry for every centre of the box, by its plane or by its bounding sphere.</summary>
-    private bool PolygonSkipped(int entry, in CentreBox box)
+    /// <summary>
+    /// One listed polygon as LeafTouches tests it, over the box: dropped when its plane or bounding sphere rejects every
+    /// centre; where the sphere is met and the contact point lies inside the polygon for every centre, only the plane
+    /// distance decides (true: it touches at every centre; else a plane item); otherwise the polygon item.
+    /// </summary>
+    private bool Polygon(int entry, in CentreBox box)
     {
         var plane = _planes[entry];
         var (min, max) = PlaneRange(new Vector3(plane.X, plane.Y, plane.Z), plane.W, box);
         var nearest = min > 0 ? min : max < 0 ? -max : 0.0;
-        if (nearest > _reach) return true;
+        if (nearest > _reach) return false;
         var sphere = _spheres[entry];
-        var sum = sphere.W + _radius;
-        var (lo, _) = box.DistanceSquared(new Vector3(sphere.X, sphere.Y, sphere.Z));
-        return lo * (1 - SquareSlack) - Tiny > (double)sum * sum * (1 + SquareSlack);
+        var sum = (double)(sphere.W + _radius);
+        var (lo, hi) = box.DistanceSquared(new Vector3(sphere.X, sphere.Y, sphere.Z));
+        if (lo * (1 - SquareSlack) - Tiny > sum * sum * (1 + SquareSlack)) return false;
+        if (hi * (1 + SquareSlack) + Tiny < sum * sum * (1 - SquareSlack) && ContactInside(_tree.LeafPolygon(entry), min, max, box))
+        {
+            if (Math.Max(Math.Abs(min), Math.Abs(max)) <= _reach) return true;
+            _scratch.Add((entry + 1) << 2 | TrueItem);
+            return false;
+        }
+        _scratch.Add(entry << 2 | PolygonTag);
+        return false;
+    }
+
+    /// <summary>
+    /// Whether PolygonSphereTest's interior test (the contact point c − n·dist on the inner side of every edge) passes
+    /// for every centre of the box: each edge's side value is affine in the centre, its least value over the box
+    /// bounded below past the rounding of dist, the contact point, the offset and the dot product.
+    /// </summary>
+    private static bool ContactInside(CompiledPolygon polygon, double distMin, double distMax, in CentreBox box)
+    {
+        var n = polygon.Normal;
+        var maxDist = Math.Max(Math.Abs(distMin), Math.Abs(distMax));
+        var reach = Math.Max(Math.Max(Math.Max(Math.Abs(box.LoX), Math.Abs(box.HiX)), Math.Max(Math.Abs(box.LoY), Math.Abs(box.HiY))), Math.Max(Math.Abs(box.LoZ), Math.Abs(box.HiZ)));
+        for (var i = 0; i < polygon.Inward.Length; i++)
+        {
+            var w = polygon.Inward[i];
+            var start = polygon.EdgeStart[i];
+            var startReach = Math.Max(Math.Abs((double)start.X), Math.Max(Math.Abs((double)start.Y), Math.Abs((double)start.Z)));
+            // side(c) = w · (c − start) − (w · n) · dist(c), dist(c) = n · c + d: affine in c with these coefficients.
+            double wn = (double)w.X * n.X + (double)w.Y * n.Y + (double)w.Z * n.Z;
+            double ax = w.X - wn * n.X, ay = w.Y - wn * n.Y, az = w.Z - wn * n.Z;
+            var constant = -((double)w.X * start.X + (double)w.Y * start.Y + (double)w.Z * start.Z) - wn * polygon.D;
+            var least = constant + (ax >= 0 ? ax * box.LoX : ax * box.HiX) + (ay >= 0 ? ay * box.LoY : ay * box.HiY) + (az >= 0 ? az * box.LoZ : az * box.HiZ);
+            // Every float step's rounding is a few ulps of the largest magnitude it meets: the centre, the plane's d and
+            // distance, the edge's start; all times the inward vector's size.
+            var scale = (Math.Abs((double)w.X) + Math.Abs((double)w.Y) + Math.Abs((double)w.Z)) * (3 * reach + maxDist + Math.Abs((double)polygon.D) + 3 * startReach);
+            if (!(scale < Huge) || !(least - 1e-5 * scale - Tiny >= 0)) return false;
+        }
+        return true;
     }
 
     /// <summary>NodeSphereHits over the box: |Δ|² &lt; (R + r)².</summary>
