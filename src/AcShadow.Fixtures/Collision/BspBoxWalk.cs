@@ -17,12 +17,13 @@ namespace AcShadow.Fixtures.Collision;
 internal sealed class BspBoxWalk
 {
     // A frontier item: payload << 2 | tag. Node: payload node << 1 | centre check, walked from there. Polygon:
-    // payload the listed-polygon entry. Guard: payload node << 2 | kind, then the length of the block it guards,
+    // payload the listed-polygon entry. Guard: payload node << 3 | kind, then the length of the block it guards,
     // skipped when the guard fails. Tag 3: payload 0 blocks (True); payload entry + 1 is a plane item, a listed
     // polygon whose contact point lies inside it and whose bounding sphere is met over the whole box, so only its
     // plane distance is left to test.
     private const int NodeTag = 0, PolygonTag = 1, GuardTag = 2, TrueItem = 3;
-    private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2;
+    // Guard kinds: the node's sphere test, its push of either child, and the centre's side of its plane (dist < 0 or not).
+    private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2, BelowGuard = 3, NotBelowGuard = 4;
 
     /// <summary>Relative bound on the float rounding of a squared distance or of R + r squared, with room to spare.</summary>
     private const double SquareSlack = 4e-6;
@@ -134,10 +135,17 @@ internal sealed class BspBoxWalk
     /// <summary>A guard as the walk decides it at this centre: the node's sphere test, or whether it pushes that child.</summary>
     internal static bool Passes(ReadOnlySpan<CompiledBspNode> nodes, int guard, Vector3 center, float radius, float reach)
     {
-        ref readonly var node = ref nodes[guard >> 2];
-        if ((guard & 3) == SphereGuard) return SphereBounds.NodeSphereHits(node, center, radius);
+        ref readonly var node = ref nodes[guard >> 3];
+        var kind = guard & 7;
+        if (kind == SphereGuard) return SphereBounds.NodeSphereHits(node, center, radius);
         var dist = PolygonPlane.Dot(node.Normal, center) + node.D;
-        return (guard & 3) == PushesPosGuard ? dist >= reach || !(dist <= -reach) : !(dist >= reach);
+        return kind switch
+        {
+            PushesPosGuard => dist >= reach || !(dist <= -reach),
+            PushesNegGuard => !(dist >= reach),
+            BelowGuard => dist < 0f,
+            _ => !(dist < 0f),
+        };
     }
 
     internal static bool IsNodeItem(int item, out int node, out bool centreCheck)
@@ -202,10 +210,17 @@ internal sealed class BspBoxWalk
 
     private BoxDecision GuardOver(int guard, in CentreBox box)
     {
-        var node = _nodes[guard >> 2];
-        if ((guard & 3) == SphereGuard) return SphereHits(node.SphereCenter, node.SphereRadius, box);
+        var node = _nodes[guard >> 3];
+        var kind = guard & 7;
+        if (kind == SphereGuard) return SphereHits(node.SphereCenter, node.SphereRadius, box);
+        if (kind >= BelowGuard)
+        {
+            var (min, max) = PlaneRange(node.Normal, node.D, box);
+            var below = Not(Compare(min, max, 0.0, atLeast: true));
+            return kind == BelowGuard ? below : Not(below);
+        }
         var (atLeast, atMost) = Pushes(node, box);
-        return (guard & 3) == PushesPosGuard ? atLeast : atMost;
+        return kind == PushesPosGuard ? atLeast : atMost;
     }
 
     /// <summary>Whether the walk pushes the positive child (dist ≥ reach or not dist ≤ −reach) and the negative one (not dist ≥ reach), over the box.</summary>
@@ -259,7 +274,7 @@ internal sealed class BspBoxWalk
             if (node.ListedPolygonCount == 0) return false;
             if (centreCheck && node.Solid) return true;
             if (sphere == BoxDecision.False) return false;
-            var leafGuard = sphere == BoxDecision.Mixed ? Open(index << 2 | SphereGuard) : -1;
+            var leafGuard = sphere == BoxDecision.Mixed ? Open(index << 3 | SphereGuard) : -1;
             var touches = false;
             for (var k = 0; k < node.PolygonCount && !touches; k++)
                 touches = Polygon(node.PolygonStart + k, box);
@@ -275,18 +290,32 @@ internal sealed class BspBoxWalk
         // Guards carry the pushes; the children's centre checks must come out the same wherever they are pushed,
         // which needs the centre's side settled when the middle band (both children) is reachable with the check on.
         var middle = positive != BoxDecision.True && negative != BoxDecision.True;
-        if ((_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed)) || (centreCheck && middle && below == BoxDecision.Mixed))
+        if (_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed))
         {
             _scratch.Add((index << 1 | (centreCheck ? 1 : 0)) << 2 | NodeTag);
             return false;
         }
         var pushPos = Or(positive, Not(negative));
         var pushNeg = Not(positive);
-        var posCheck = centreCheck && (positive == BoxDecision.True || below == BoxDecision.False);
-        var negCheck = centreCheck && (negative == BoxDecision.True || below == BoxDecision.True);
-        var nodeGuard = sphere == BoxDecision.Mixed ? Open(index << 2 | SphereGuard) : -1;
-        var blocks = Branch(pushPos, node.Pos, posCheck, index << 2 | PushesPosGuard, box)
-            || Branch(pushNeg, node.Neg, negCheck, index << 2 | PushesNegGuard, box);
+        var nodeGuard = sphere == BoxDecision.Mixed ? Open(index << 3 | SphereGuard) : -1;
+        bool blocks;
+        if (centreCheck && middle && below == BoxDecision.Mixed)
+        {
+            // The centre's side decides which child keeps the centre check (the negative one below the plane): one
+            // block per side behind a side guard, the walk's own dist < 0.
+            var under = Open(index << 3 | BelowGuard);
+            Close(under, Branch(pushPos, node.Pos, false, index << 3 | PushesPosGuard, box) || Branch(pushNeg, node.Neg, true, index << 3 | PushesNegGuard, box));
+            var over = Open(index << 3 | NotBelowGuard);
+            Close(over, Branch(pushPos, node.Pos, true, index << 3 | PushesPosGuard, box) || Branch(pushNeg, node.Neg, false, index << 3 | PushesNegGuard, box));
+            blocks = false;
+        }
+        else
+        {
+            var posCheck = centreCheck && (positive == BoxDecision.True || below == BoxDecision.False);
+            var negCheck = centreCheck && (negative == BoxDecision.True || below == BoxDecision.True);
+            blocks = Branch(pushPos, node.Pos, posCheck, index << 3 | PushesPosGuard, box)
+                || Branch(pushNeg, node.Neg, negCheck, index << 3 | PushesNegGuard, box);
+        }
         if (nodeGuard < 0) return blocks;
         Close(nodeGuard, blocks);
         return false;
