@@ -192,9 +192,9 @@ internal static class SceneCompiler
             else if (expected) falsePass++;
             else falseBlock++;
         }
-        var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
-        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true, grids: grids);
-        var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive);
+        var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, built: retail);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true, grids: grids, built: chosen);
+        var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive, built: retail);
         var retailModel = new PreparedModel(retail, [], []);
         var compiledModel = new PreparedModel(chosen, [], []);
         var exhaustiveModel = new PreparedModel(retail.Exhaustive, [], []);

@@ -54,6 +54,9 @@ internal sealed class SceneReachGrid
 
     public float Radius { get; }
 
+    /// <summary>The entries asked at every position, before the voxel (no finite broad phase).</summary>
+    internal IReadOnlyList<int> Always => _always;
+
     /// <summary>What the grid holds, in bytes.</summary>
     public long Bytes => 4L * (_codes.Length + _frontiers.Length + _programs.Length);
 
