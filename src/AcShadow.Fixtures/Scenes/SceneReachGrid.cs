@@ -200,6 +200,9 @@ internal sealed class SceneReachGrid
     /// <summary>The build: deterministic (no threads, fixed orders), so the same scene always gives the same grid.</summary>
     private sealed class Builder
     {
+        /// <summary>A program that would cost more than this is not stored: the entry's tree index answers faster.</summary>
+        private const long LongProgram = 16;
+
         /// <summary>What asking an entry whole is counted at, for the split order: two turns and a short walk.</summary>
         private const long WholeCost = 8;
 
@@ -363,8 +366,9 @@ internal sealed class SceneReachGrid
                     _codes[cell.Slot] = BlockedCode;
                     return;
                 }
-                // Blocked behind a broad phase: the program that blocks once it passes.
-                var program = settled.Outcome == BspBoxWalk.Outcome.Blocked ? BspBoxWalk.Blocks : settled.Items;
+                // Blocked behind a broad phase: the program that blocks once it passes. A long program (a cell the budget
+                // left large) is not kept: the entry is asked whole there, through its tree's own voxel index.
+                var program = settled.Outcome == BspBoxWalk.Outcome.Blocked ? BspBoxWalk.Blocks : settled.Cost > LongProgram ? null : settled.Items;
                 var open = new Open(parent.Entry, gated, program, settled.Guarded, (gated ? 1 : 0) + 2 + settled.Cost);
                 _open.Add(open);
                 cost += open.Cost;
