@@ -25,8 +25,7 @@ internal sealed class BspBoxWalk
     // Guard kinds: the node's sphere test, its push of either child, and the centre's side of its plane (dist < 0 or not).
     private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2, BelowGuard = 3, NotBelowGuard = 4;
 
-    /// <summary>A node whose centre check depends on the side is split into two side-guarded blocks up to this subtree cost, walked above it.</summary>
-    private const long SideSplitCost = 24;
+
 
     /// <summary>Relative bound on the float rounding of a squared distance or of R + r squared, with room to spare.</summary>
     private const double SquareSlack = 4e-6;
@@ -294,7 +293,7 @@ internal sealed class BspBoxWalk
         // which needs the centre's side settled when the middle band (both children) is reachable with the check on.
         var middle = positive != BoxDecision.True && negative != BoxDecision.True;
         var sided = centreCheck && middle && below == BoxDecision.Mixed;
-        if ((_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed)) || (sided && _subtreeCost[index] > SideSplitCost))
+        if (_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed))
         {
             _scratch.Add((index << 1 | (centreCheck ? 1 : 0)) << 2 | NodeTag);
             return false;
@@ -306,8 +305,8 @@ internal sealed class BspBoxWalk
         if (sided)
         {
             // The centre's side decides which child keeps the centre check (the negative one below the plane): one
-            // block per side behind a side guard, the walk's own dist < 0. Only for a small subtree: a large one,
-            // written out twice, costs more to run than the walk below it.
+            // block per side behind a side guard, the walk's own dist < 0 (a large subtree written out twice is left to
+            // finer voxels, or to the tree's own index where its program grows long: SceneReachGrid).
             var under = Open(index << 3 | BelowGuard);
             Close(under, Branch(pushPos, node.Pos, false, index << 3 | PushesPosGuard, box) || Branch(pushNeg, node.Neg, true, index << 3 | PushesNegGuard, box));
             var over = Open(index << 3 | NotBelowGuard);
