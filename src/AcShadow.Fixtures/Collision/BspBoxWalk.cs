@@ -34,9 +34,10 @@ internal sealed class BspBoxWalk
     private const double Huge = 1e30;
 
     private readonly BspSphereQuery _tree;
-    private readonly CompiledBspNode[] _nodes;
-    private readonly Vector4[] _planes;
-    private readonly Vector4[] _spheres;
+    // The tree's own arrays, read in place: a walk per tree and radius, held while a grid is built, copies nothing.
+    private ReadOnlySpan<CompiledBspNode> _nodes => _tree.Nodes;
+    private ReadOnlySpan<Vector4> _planes => _tree.LeafPlanes;
+    private ReadOnlySpan<Vector4> _spheres => _tree.LeafSpheres;
     private readonly float _radius;
     private readonly double _reach;
     private readonly long[] _subtreeCost;
@@ -51,18 +52,24 @@ internal sealed class BspBoxWalk
     /// <param name="Cost">Nodes and polygons a walk of the frontier would look at, at most.</param>
     public readonly record struct Settled(Outcome Outcome, int[] Items, bool Guarded, long Cost);
 
-    public BspBoxWalk(BspSphereQuery tree, float radius)
+    private readonly bool _splitSides;
+
+    /// <param name="tree">The tree whose walk is run over boxes.</param>
+    /// <param name="radius">The mover radius, in the tree's units.</param>
+    /// <param name="splitSides">
+    /// Write a node whose children's centre check depends on the centre's side as two side-guarded blocks (more to
+    /// store, less to run: the scene's grid), instead of a walk from the node (a tree's own small index).
+    /// </param>
+    public BspBoxWalk(BspSphereQuery tree, float radius, bool splitSides = true)
     {
+        _splitSides = splitSides;
         _tree = tree;
-        _nodes = tree.Nodes.ToArray();
-        _planes = tree.LeafPlanes.ToArray();
-        _spheres = tree.LeafSpheres.ToArray();
         _radius = radius;
         _reach = radius - PhysicsEpsilon.Value;
         _subtreeCost = new long[_nodes.Length];
         for (var i = _nodes.Length - 1; i >= 0; i--)
         {
-            var node = _nodes[i];
+            ref readonly var node = ref _nodes[i];
             _subtreeCost[i] = 1 + (node.IsLeaf ? node.PolygonCount
                 : (node.Pos >= 0 ? _subtreeCost[node.Pos] : 0) + (node.Neg >= 0 ? _subtreeCost[node.Neg] : 0));
         }
@@ -71,13 +78,21 @@ internal sealed class BspBoxWalk
     public float Radius => _radius;
 
     /// <summary>A program that blocks (behind the broad phase when guarded): what a blocked box runs as a frontier.</summary>
-    public static int[] Blocks => [TrueItem];
+    public static ReadOnlySpan<int> Blocks => [TrueItem];
 
     /// <summary>
     /// The walk over a box, from the root (<paramref name="parent"/> null: the broad phase and the whole tree) or
     /// from an enclosing box's frontier (a decision uniform over the enclosing box stays so over this one).
     /// </summary>
-    public Settled Settle(in CentreBox box, int[]? parent = null, bool parentGuarded = true)
+    public Settled Settle(in CentreBox box, int[]? parent = null, bool parentGuarded = true) =>
+        Settle(box, parent is null, parent, parentGuarded);
+
+    /// <summary>
+    /// <see cref="Settle(in CentreBox, int[], bool)"/> from a stored program (<paramref name="fromRoot"/>: ignore it, walk from
+    /// the root). Not <paramref name="copy"/>: the frontier is left in <see cref="LastFrontier"/> (until the next settle)
+    /// instead of copied into <see cref="Settled.Items"/>, for a caller that stores it at once.
+    /// </summary>
+    public Settled Settle(in CentreBox box, bool fromRoot, ReadOnlySpan<int> parent, bool parentGuarded, bool copy = true)
     {
         if (_nodes.Length == 0) return new Settled(Outcome.Clear, [], false, 0);
         _scratch.Clear();
@@ -88,18 +103,21 @@ internal sealed class BspBoxWalk
             if (broad == BoxDecision.False) return new Settled(Outcome.Clear, [], false, 0);
             guarded = broad == BoxDecision.Mixed;
         }
-        var blocked = parent is null ? Visit(0, true, box) : Replay(parent, 0, parent.Length, box);
+        var blocked = fromRoot ? Visit(0, true, box) : Replay(parent, 0, parent.Length, box);
         if (blocked) return new Settled(Outcome.Blocked, [], guarded, guarded ? 1 : 0);
         if (_scratch.Count == 0) return new Settled(Outcome.Clear, [], false, 0);
-        int[] items = [.. _scratch];
+        var frontier = LastFrontier;
         long cost = guarded ? 1 : 0;
-        for (var i = 0; i < items.Length; i++)
+        for (var i = 0; i < frontier.Length; i++)
         {
-            cost += IsNodeItem(items[i], out var node, out _) ? _subtreeCost[node] : 1;
-            if (IsGuard(items[i], out _)) i++;
+            cost += IsNodeItem(frontier[i], out var node, out _) ? _subtreeCost[node] : 1;
+            if (IsGuard(frontier[i], out _)) i++;
         }
-        return new Settled(Outcome.Frontier, items, guarded, cost);
+        return new Settled(Outcome.Frontier, copy ? frontier.ToArray() : [], guarded, cost);
     }
+
+    /// <summary>The frontier the last <see cref="Settle(in CentreBox, bool, ReadOnlySpan{int}, bool, bool)"/> left (empty unless it was a frontier).</summary>
+    public ReadOnlySpan<int> LastFrontier => System.Runtime.InteropServices.CollectionsMarshal.AsSpan(_scratch);
 
     /// <summary>
     /// A settled frontier at a centre of its box: <see cref="BspSphereQuery.Overlaps"/>'s answer there. Guarded: the
@@ -182,7 +200,7 @@ internal sealed class BspBoxWalk
     /// tested again, each guard decided again (a block whose guard now always passes is inlined, one that never
     /// passes dropped). True when what is replayed blocks for every centre under the guards open around it.
     /// </summary>
-    private bool Replay(int[] program, int from, int to, in CentreBox box)
+    private bool Replay(ReadOnlySpan<int> program, int from, int to, in CentreBox box)
     {
         for (var i = from; i < to;)
         {
@@ -293,7 +311,7 @@ internal sealed class BspBoxWalk
         // which needs the centre's side settled when the middle band (both children) is reachable with the check on.
         var middle = positive != BoxDecision.True && negative != BoxDecision.True;
         var sided = centreCheck && middle && below == BoxDecision.Mixed;
-        if (_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed))
+        if ((_reach <= 0 && (positive == BoxDecision.Mixed || negative == BoxDecision.Mixed)) || (sided && !_splitSides))
         {
             _scratch.Add((index << 1 | (centreCheck ? 1 : 0)) << 2 | NodeTag);
             return false;

@@ -179,7 +179,8 @@ internal sealed class BspReachGrid
 
         public Builder(BspSphereQuery tree, float radius, Vector3 origin, float inverseFine, int top)
         {
-            _walk = new BspBoxWalk(tree, radius);
+            // A tree's index holds at most 4,096 cells: programs written per side would outgrow it, a walk from the node does not.
+            _walk = new BspBoxWalk(tree, radius, splitSides: false);
             _origin = origin;
             _fine = 1.0 / inverseFine;
             _top = top;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.InteropServices;
 using AcShadow.Fixtures.Collision;
 using AcShadow.Fixtures.Geometry;
 
@@ -76,7 +77,7 @@ internal sealed class SceneReachGrid
     }
 
     /// <summary>The grid of a scene's entries for one mover radius, holding at most <paramref name="cellBudget"/> cell codes; null for an unusable radius.</summary>
-    public static SceneReachGrid? Build(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int cellBudget = 1 << 21) =>
+    public static SceneReachGrid? Build(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int cellBudget = 1 << 19) =>
         SphereBounds.IsValidProbe(Vector3.Zero, radius) && radius > 0f ? new Builder(objects, cells, cellReach, radius, cellBudget).Run() : null;
 
     /// <summary>Does a sphere of <see cref="Radius"/> at this (valid) landblock-relative centre touch any entry?</summary>
@@ -193,9 +194,10 @@ internal sealed class SceneReachGrid
     }
 
     /// <summary>One entry open over a cell: its program (null: asked whole) and guard, and whether its broad phases are asked first.</summary>
-    private readonly record struct Open(int Entry, bool Gated, int[]? Program, bool Guarded, long Cost);
+    private readonly record struct Open(int Entry, bool Gated, int Program, long Cost);
 
-    private sealed record Pending(int Slot, int Level, int X, int Y, int Z, Open[] Entries, long Cost);
+    /// <summary>A cell waiting to be split: where its code is, its place at its level, and its frontier (offset in the stored frontiers) its children start from.</summary>
+    private readonly record struct Pending(int Slot, int Level, int X, int Y, int Z, int Frontier, long Cost);
 
     /// <summary>The build: deterministic (no threads, fixed orders), so the same scene always gives the same grid.</summary>
     private sealed class Builder
@@ -213,12 +215,14 @@ internal sealed class SceneReachGrid
         private readonly int _budget;
         private readonly Target?[] _targets;
         private readonly List<int> _always = [];
-        private readonly List<int> _codes = [];
+        private readonly List<int> _codes;
         private readonly List<int> _frontiers = [];
         private readonly List<int> _programs = [];
-        private readonly Dictionary<string, int> _frontierIndex = new(StringComparer.Ordinal);
-        private readonly Dictionary<string, int> _programIndex = new(StringComparer.Ordinal);
+        private readonly Dictionary<ulong, int> _frontierIndex = [];
+        private readonly Dictionary<ulong, int> _programIndex = [];
+        private readonly List<int> _scratch = [];
         private readonly List<Open> _open = [];
+        private readonly List<Open> _parents = [];
         private Vector3 _origin;
         private double _fine, _pad;
         private int _topX, _topY, _topZ;
@@ -226,6 +230,7 @@ internal sealed class SceneReachGrid
         public Builder(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int budget)
         {
             (_objects, _cells, _cellReach, _radius, _budget) = (objects, cells, cellReach, radius, budget);
+            _codes = new List<int>(Math.Min(budget, 1 << 16));
             var walks = new Dictionary<(BspSphereQuery, float), BspBoxWalk>();
             _targets = new Target?[objects.Length + cells.Length];
             for (var i = 0; i < objects.Length; i++)
@@ -303,13 +308,17 @@ internal sealed class SceneReachGrid
                     {
                         _codes.Add(ClearCode);
                         if (candidates[(x * _topY + y) * _topZ + z] is not { } list) continue;
-                        Settle(new Pending(_codes.Count - 1, 0, x, y, z, [.. list.Select(e => new Open(e, true, null, true, 0))], 0), pending);
+                        _parents.Clear();
+                        foreach (var e in list) _parents.Add(new Open(e, true, -1, 0));
+                        Settle(new Pending(_codes.Count - 1, 0, x, y, z, -1, 0), pending);
                     }
             // Level by level, the costliest frontiers first, while the budget lasts.
             for (var level = 0; level < Levels && pending.Count > 0; level++)
             {
-                var splitting = pending.Where(p => p.Level == level).OrderByDescending(p => p.Cost).ThenBy(p => p.Slot).ToList();
-                pending.RemoveAll(p => p.Level == level);
+                // Every pending cell is at this level (a cell is queued one level below the cell it splits).
+                var splitting = pending.ToArray();
+                pending.Clear();
+                Array.Sort(splitting, (a, b) => a.Cost != b.Cost ? b.Cost.CompareTo(a.Cost) : a.Slot.CompareTo(b.Slot));
                 foreach (var cell in splitting)
                 {
                     if (_codes.Count + 8 > _budget) break;
@@ -317,7 +326,10 @@ internal sealed class SceneReachGrid
                     _codes[cell.Slot] = -first;
                     for (var k = 0; k < 8; k++) _codes.Add(ClearCode);
                     for (var k = 0; k < 8; k++)
-                        Settle(new Pending(first + k, level + 1, cell.X * 2 + (k & 1), cell.Y * 2 + (k >> 1 & 1), cell.Z * 2 + (k >> 2 & 1), cell.Entries, 0), pending);
+                    {
+                        Parents(cell.Frontier);
+                        Settle(new Pending(first + k, level + 1, cell.X * 2 + (k & 1), cell.Y * 2 + (k >> 1 & 1), cell.Z * 2 + (k >> 2 & 1), -1, 0), pending);
+                    }
                 }
             }
             return Result(_origin, inverseFine, (_topX, _topY, _topZ));
@@ -340,13 +352,25 @@ internal sealed class SceneReachGrid
             return (o.LandblockBound.Center, o.NearDistance(_radius));
         }
 
-        /// <summary>Classifies one cell from its parent's open entries, writes its code, and queues it for splitting when its frontier is worth it.</summary>
+        /// <summary>A stored frontier's entries, as the open entries its children start from.</summary>
+        private void Parents(int frontier)
+        {
+            _parents.Clear();
+            var count = _frontiers[frontier];
+            for (var k = 0; k < count; k++)
+            {
+                var head = _frontiers[frontier + 1 + 2 * k];
+                _parents.Add(new Open(head >> 1, (head & 1) != 0, _frontiers[frontier + 2 + 2 * k], 0));
+            }
+        }
+
+        /// <summary>Classifies one cell from its parent's open entries (<see cref="_parents"/>), writes its code, and queues it for splitting when its frontier is worth it.</summary>
         private void Settle(Pending cell, List<Pending> pending)
         {
             var box = BoxOf(cell.Level, cell.X, cell.Y, cell.Z);
             _open.Clear();
             long cost = 0;
-            foreach (var parent in cell.Entries)
+            foreach (var parent in _parents)
             {
                 var gate = parent.Gated ? GateOver(parent.Entry, box) : BoxDecision.True;
                 if (gate == BoxDecision.False) continue;
@@ -355,11 +379,13 @@ internal sealed class SceneReachGrid
                 var local = target is null ? default : LocalBox(parent.Entry, target, box);
                 if (target is null || !local.IsUsable)
                 {
-                    _open.Add(new Open(parent.Entry, gated, null, false, WholeCost));
+                    _open.Add(new Open(parent.Entry, gated, -1, WholeCost));
                     cost += WholeCost;
                     continue;
                 }
-                var settled = target.Walk.Settle(local, parent.Program, parent.Program is null || parent.Guarded);
+                var settled = parent.Program < 0
+                    ? target.Walk.Settle(local, true, [], true, copy: false)
+                    : target.Walk.Settle(local, false, ProgramItems(parent.Program, out var parentGuarded), parentGuarded, copy: false);
                 if (settled.Outcome == BspBoxWalk.Outcome.Clear) continue;
                 if (settled.Outcome == BspBoxWalk.Outcome.Blocked && !settled.Guarded && !gated)
                 {
@@ -368,8 +394,9 @@ internal sealed class SceneReachGrid
                 }
                 // Blocked behind a broad phase: the program that blocks once it passes. A long program (a cell the budget
                 // left large) is not kept: the entry is asked whole there, through its tree's own voxel index.
-                var program = settled.Outcome == BspBoxWalk.Outcome.Blocked ? BspBoxWalk.Blocks : settled.Cost > LongProgram ? null : settled.Items;
-                var open = new Open(parent.Entry, gated, program, settled.Guarded, (gated ? 1 : 0) + 2 + settled.Cost);
+                var program = settled.Outcome == BspBoxWalk.Outcome.Blocked ? Program(BspBoxWalk.Blocks, settled.Guarded)
+                    : settled.Cost > LongProgram ? -1 : Program(target.Walk.LastFrontier, settled.Guarded);
+                var open = new Open(parent.Entry, gated, program, (gated ? 1 : 0) + 2 + settled.Cost);
                 _open.Add(open);
                 cost += open.Cost;
             }
@@ -378,9 +405,9 @@ internal sealed class SceneReachGrid
                 _codes[cell.Slot] = ClearCode;
                 return;
             }
-            Open[] entries = [.. _open];
-            _codes[cell.Slot] = FrontierBase + Store(entries);
-            if (cell.Level < Levels && cost >= SplitCost) pending.Add(cell with { Entries = entries, Cost = cost });
+            var frontier = Store(_open);
+            _codes[cell.Slot] = FrontierBase + frontier;
+            if (cell.Level < Levels && cost >= SplitCost) pending.Add(cell with { Frontier = frontier, Cost = cost });
         }
 
         private BoxDecision GateOver(int entry, in CentreBox box)
@@ -401,30 +428,49 @@ internal sealed class SceneReachGrid
             return box.Turned(o.Matrix).Scaled(1f / o.Frame.Scale).Turned(target.Matrix).Scaled(1f / pose.Scale);
         }
 
-        /// <summary>A frontier: each entry and its program, stored once however many voxels share it.</summary>
-        private int Store(Open[] entries)
+        /// <summary>A stored program's items and guard.</summary>
+        private ReadOnlySpan<int> ProgramItems(int offset, out bool guarded)
         {
-            var key = string.Join(';', entries.Select(o => $"{o.Entry}{(o.Gated ? "g" : "")}:{(o.Program is null ? "w" : Program(o.Program, o.Guarded).ToString(System.Globalization.CultureInfo.InvariantCulture))}"));
-            if (_frontierIndex.TryGetValue(key, out var offset)) return offset;
-            offset = _frontiers.Count;
-            _frontiers.Add(entries.Length);
-            foreach (var o in entries)
-            {
-                _frontiers.Add(o.Entry << 1 | (o.Gated ? 1 : 0));
-                _frontiers.Add(o.Program is null ? -1 : Program(o.Program, o.Guarded));
-            }
-            _frontierIndex[key] = offset;
-            return offset;
+            var programs = CollectionsMarshal.AsSpan(_programs);
+            guarded = (programs[offset] & 1) != 0;
+            return programs.Slice(offset + 1, programs[offset] >> 1);
         }
 
-        private int Program(int[] items, bool guarded)
+        /// <summary>A frontier: each entry and its program, stored once however many voxels share it.</summary>
+        private int Store(List<Open> entries)
         {
-            var key = (guarded ? "g" : "") + string.Join(',', items);
-            if (_programIndex.TryGetValue(key, out var offset)) return offset;
-            offset = _programs.Count;
-            _programs.Add(items.Length << 1 | (guarded ? 1 : 0));
-            _programs.AddRange(items);
-            _programIndex[key] = offset;
+            _scratch.Clear();
+            _scratch.Add(entries.Count);
+            foreach (var o in entries)
+            {
+                _scratch.Add(o.Entry << 1 | (o.Gated ? 1 : 0));
+                _scratch.Add(o.Program);
+            }
+            return Intern(_frontiers, _frontierIndex, CollectionsMarshal.AsSpan(_scratch));
+        }
+
+        private int Program(ReadOnlySpan<int> items, bool guarded)
+        {
+            _scratch.Clear();
+            _scratch.Add(items.Length << 1 | (guarded ? 1 : 0));
+            foreach (var item in items) _scratch.Add(item);
+            return Intern(_programs, _programIndex, CollectionsMarshal.AsSpan(_scratch));
+        }
+
+        /// <summary>
+        /// The offset of <paramref name="content"/> in <paramref name="store"/>, appended unless an equal run is there
+        /// already (found by a hash of its ints and compared in full; a hash shared by a different run stores a copy).
+        /// </summary>
+        private static int Intern(List<int> store, Dictionary<ulong, int> index, ReadOnlySpan<int> content)
+        {
+            var hash = 14695981039346656037UL;
+            foreach (var v in content) hash = (hash ^ (uint)v) * 1099511628211UL;
+            if (index.TryGetValue(hash, out var known) && known + content.Length <= store.Count
+                && CollectionsMarshal.AsSpan(store).Slice(known, content.Length).SequenceEqual(content))
+                return known;
+            var offset = store.Count;
+            foreach (var v in content) store.Add(v);
+            index.TryAdd(hash, offset);
             return offset;
         }
 
