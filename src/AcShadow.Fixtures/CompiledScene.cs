@@ -95,7 +95,7 @@ public sealed class CompiledScene
                 throw new FormatException($"cell {JsonIds.Format(c.CellId)}: {ex.Message}", ex);
             }
         }
-        return new CompiledScene(file.LandblockId, file.MoverRadii, file.TolerancePercent, objects, cells, new SceneQuery(queries, cellQueries));
+        return new CompiledScene(file.LandblockId, file.MoverRadii, file.TolerancePercent, objects, cells, new SceneQuery(queries, cellQueries, file.MoverRadii));
     }
 
     private static ISphereOverlap Shape(CompiledSceneFile.Shape shape, Dictionary<string, BspSphereQuery> trees, BspReachGrids grids, Func<string, BspDump> bspFile) => shape switch

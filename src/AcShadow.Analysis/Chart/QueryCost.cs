@@ -172,10 +172,48 @@ internal static class QueryCost
         }
     }
 
+    /// <summary>
+    /// A settled frontier (<see cref="BspBoxWalk"/>: a voxel of a tree's or a scene's grid) at a part-local centre,
+    /// counted item by item as the walk counts what it runs: the root's broad phase 1 when guarded, each guard 1, each
+    /// polygon as the walk counts it, each plane item 1, each node's walk.
+    /// </summary>
+    public static int Frontier(CompiledBsp bsp, ReadOnlySpan<int> items, bool guarded, Vector3 local, float r, out bool blocked)
+    {
+        blocked = false;
+        var nodes = bsp.Nodes;
+        var reach = r - PhysicsEpsilon.Value;
+        var ops = 0;
+        if (guarded)
+        {
+            ops++;
+            var root = nodes[0];
+            if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
+            if (items.IsEmpty) { blocked = true; return ops; }
+        }
+        for (var i = 0; i < items.Length;)
+        {
+            var item = items[i++];
+            if (BspBoxWalk.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(bsp, node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
+            else if (BspBoxWalk.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
+            else if (BspBoxWalk.IsPlaneItem(item, out entry))
+            {
+                ops++;
+                blocked = !(MathF.Abs(bsp.Polygons[bsp.LeafPolygons[entry]].Distance(local)) > reach);
+            }
+            else if (BspBoxWalk.IsGuard(item, out var guard))
+            {
+                ops++;
+                var length = items[i++];
+                if (!BspBoxWalk.Passes(nodes.AsSpan(), guard, local, r, reach)) i += length;
+            }
+            else blocked = true;
+            if (blocked) return ops;
+        }
+        return ops;
+    }
+
     private sealed class BspShape(PartPose pose, CompiledBsp bsp, BspReachGrids? grids) : Shape
     {
-        private readonly int[] _stack = new int[bsp.Nodes.Length * 2 + 2];
-
         /// <summary>The walk <see cref="BspSphereQuery.Overlaps"/> takes (same pruning, same order), counted; or the voxel index's path to the same answer.</summary>
         public override int Count(Vector3 center, float radius, out bool blocked)
         {
@@ -187,98 +225,74 @@ internal static class QueryCost
             var root = nodes[0];
             var reach = r - PhysicsEpsilon.Value;
             if (grids?.Find(bsp, r) is { } grid && grid.Code(local) is var code && !BspReachGrid.IsOutside(code))
-                return Transform + 1 + Indexed(grid, code, root, local, r, reach, out blocked);
+            {
+                blocked = BspReachGrid.IsBlocked(code);
+                if (BspReachGrid.IsClear(code) || blocked) return ops;
+                var items = grid.Frontier(code, out var guarded);
+                return ops + Frontier(bsp, items, guarded, local, r, out blocked);
+            }
             if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
-            return ops + Walk(1, local, r, reach, out blocked);
+            return ops + Walk(bsp, 1, local, r, reach, out blocked);
         }
+    }
 
-        /// <summary>The frontier of the centre's voxel, counted item by item as the walk counts them.</summary>
-        private int Indexed(BspReachGrid grid, int code, in CompiledBspNode root, Vector3 local, float r, float reach, out bool blocked)
+    /// <summary>The walk below one entry (node &lt;&lt; 1 | centre check), counted.</summary>
+    private static int Walk(CompiledBsp bsp, int start, Vector3 local, float r, float reach, out bool blocked)
+    {
+        blocked = false;
+        var nodes = bsp.Nodes;
+        var ops = 0;
+        var top = 0;
+        Span<int> stack = nodes.Length <= 512 ? stackalloc int[nodes.Length * 2 + 2] : new int[nodes.Length * 2 + 2];
+        stack[top++] = start;
+        while (top > 0)
         {
-            blocked = BspReachGrid.IsBlocked(code);
-            if (BspReachGrid.IsClear(code) || blocked) return 0;
-            var items = grid.Frontier(code, out var guarded);
-            var ops = 0;
-            if (guarded)
+            var entry = stack[--top];
+            var node = nodes[entry >> 1];
+            var centreCheck = (entry & 1) != 0;
+            if (node.IsLeaf)
             {
+                if (node.ListedPolygonCount == 0) continue;
+                if (centreCheck && node.Solid) { blocked = true; return ops; }
                 ops++;
-                if (DistanceSquared(root.SphereCenter, local) - (root.SphereRadius + r) * (root.SphereRadius + r) >= PhysicsEpsilon.Value) return ops;
-                if (items.IsEmpty) { blocked = true; return ops; }
-            }
-            for (var i = 0; i < items.Length;)
-            {
-                var item = items[i++];
-                if (BspReachGrid.IsNodeItem(item, out var node, out var centreCheck)) ops += Walk(node << 1 | (centreCheck ? 1 : 0), local, r, reach, out blocked);
-                else if (BspReachGrid.IsPolygonItem(item, out var entry)) ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[entry]], local, r, reach, out blocked);
-                else if (BspReachGrid.IsGuard(item, out var guard))
-                {
-                    ops++;
-                    var length = items[i++];
-                    if (!grid.Passes(guard, local)) i += length;
-                }
-                else blocked = true;
-                if (blocked) return ops;
-            }
-            return ops;
-        }
-
-        /// <summary>The walk below one entry (node &lt;&lt; 1 | centre check), counted.</summary>
-        private int Walk(int start, Vector3 local, float r, float reach, out bool blocked)
-        {
-            blocked = false;
-            var nodes = bsp.Nodes;
-            var ops = 0;
-            var top = 0;
-            _stack[top++] = start;
-            while (top > 0)
-            {
-                var entry = _stack[--top];
-                var node = nodes[entry >> 1];
-                var centreCheck = (entry & 1) != 0;
-                if (node.IsLeaf)
-                {
-                    if (node.ListedPolygonCount == 0) continue;
-                    if (centreCheck && node.Solid) { blocked = true; return ops; }
-                    ops++;
-                    if (!(DistanceSquared(node.SphereCenter, local) < (node.SphereRadius + r) * (node.SphereRadius + r))) continue;
-                    for (var k = 0; k < node.PolygonCount; k++)
-                    {
-                        ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[node.PolygonStart + k]], local, r, reach, out blocked);
-                        if (blocked) return ops;
-                    }
-                    continue;
-                }
-                ops += 2;
                 if (!(DistanceSquared(node.SphereCenter, local) < (node.SphereRadius + r) * (node.SphereRadius + r))) continue;
-                var dist = PolygonPlane.Dot(node.Normal, local) + node.D;
-                if (dist >= reach) Push(ref top, node.Pos, centreCheck);
-                else if (dist <= -reach) Push(ref top, node.Neg, centreCheck);
-                else if (dist < 0f)
+                for (var k = 0; k < node.PolygonCount; k++)
                 {
-                    Push(ref top, node.Pos, false);
-                    Push(ref top, node.Neg, centreCheck);
+                    ops += PolygonCount(bsp.Polygons[bsp.LeafPolygons[node.PolygonStart + k]], local, r, reach, out blocked);
+                    if (blocked) return ops;
                 }
-                else
-                {
-                    Push(ref top, node.Pos, centreCheck);
-                    Push(ref top, node.Neg, false);
-                }
+                continue;
             }
-            return ops;
+            ops += 2;
+            if (!(DistanceSquared(node.SphereCenter, local) < (node.SphereRadius + r) * (node.SphereRadius + r))) continue;
+            var dist = PolygonPlane.Dot(node.Normal, local) + node.D;
+            if (dist >= reach) Push(stack, ref top, node.Pos, centreCheck);
+            else if (dist <= -reach) Push(stack, ref top, node.Neg, centreCheck);
+            else if (dist < 0f)
+            {
+                Push(stack, ref top, node.Pos, false);
+                Push(stack, ref top, node.Neg, centreCheck);
+            }
+            else
+            {
+                Push(stack, ref top, node.Pos, centreCheck);
+                Push(stack, ref top, node.Neg, false);
+            }
         }
+        return ops;
+    }
 
-        private static int PolygonCount(CompiledPolygon polygon, Vector3 local, float r, float reach, out bool blocked)
-        {
-            blocked = false;
-            if (MathF.Abs(polygon.Distance(local)) > reach) return 1;
-            blocked = PolygonSphereTest.Touches(polygon, local, r);
-            return 3 + polygon.Vertices.Length;
-        }
+    private static int PolygonCount(CompiledPolygon polygon, Vector3 local, float r, float reach, out bool blocked)
+    {
+        blocked = false;
+        if (MathF.Abs(polygon.Distance(local)) > reach) return 1;
+        blocked = PolygonSphereTest.Touches(polygon, local, r);
+        return 3 + polygon.Vertices.Length;
+    }
 
-        private void Push(ref int top, int child, bool centreCheck)
-        {
-            if (child >= 0) _stack[top++] = child << 1 | (centreCheck ? 1 : 0);
-        }
+    private static void Push(Span<int> stack, ref int top, int child, bool centreCheck)
+    {
+        if (child >= 0) stack[top++] = child << 1 | (centreCheck ? 1 : 0);
     }
 
     private static (Vector3 Center, float Radius) BoundOf(IReadOnlyList<Vector3> vertices)

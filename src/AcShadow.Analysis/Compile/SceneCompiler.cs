@@ -172,7 +172,8 @@ internal static class SceneCompiler
         // The compiled scene registers each posed part on its own (PlacedParts) and asks every tree through its
         // per-radius grids (BspReachGrid): retail's answers, fewer steps.
         var grids = new BspReachGrids(options.Chart.Radii);
-        var chosen = Query(placed, compiled, cells, c => c.Chosen, partsApart: true, grids: grids);
+        // And decides the whole scene ahead of time for each mover radius over landblock voxels (SceneReachGrid).
+        var chosen = Query(placed, compiled, cells, c => c.Chosen, partsApart: true, grids: grids, gridRadii: options.Chart.Radii);
         var segments = new List<(IReadOnlyList<Probe>, PartPose)>();
         foreach (var p in placed)
         {
@@ -191,9 +192,9 @@ internal static class SceneCompiler
             else if (expected) falsePass++;
             else falseBlock++;
         }
-        var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes);
-        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true, grids: grids);
-        var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive);
+        var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, built: retail);
+        var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true, grids: grids, built: chosen);
+        var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive, built: retail);
         var retailModel = new PreparedModel(retail, [], []);
         var compiledModel = new PreparedModel(chosen, [], []);
         var exhaustiveModel = new PreparedModel(retail.Exhaustive, [], []);
@@ -225,11 +226,13 @@ internal static class SceneCompiler
     /// box profile, <see cref="BoundStretch"/>) — or, <paramref name="partsApart"/> (the
     /// compiled scene), each posed part behind its own (<see cref="PlacedParts"/>) — and every cell by its retail
     /// tree (<see cref="CellOverlapQuery"/>, as the fixtures library asks a cell); with <paramref name="grids"/>, every
-    /// tree asked through its <see cref="BspReachGrid"/>s, as the fixtures library's compiled scene asks it.
+    /// tree asked through its <see cref="BspReachGrid"/>s, and with <paramref name="gridRadii"/> the whole scene decided
+    /// ahead for those radii (<see cref="SceneReachGrid"/>), as the fixtures library's compiled scene asks it.
     /// </summary>
     internal static SceneQuery Query(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
-        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart = false, BspReachGrids? grids = null) =>
-        new([.. Entries(placed, compiled, pick, partsApart, grids).Select(e => e.Entry)], CellQueries(cells, grids));
+        IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, bool partsApart = false, BspReachGrids? grids = null,
+        IReadOnlyList<float>? gridRadii = null) =>
+        new([.. Entries(placed, compiled, pick, partsApart, grids).Select(e => e.Entry)], CellQueries(cells, grids), gridRadii);
 
     /// <summary>The scene's object entries in order, each with the model it asks (one per object, or per part <paramref name="partsApart"/>).</summary>
     internal static IEnumerable<(PlacedQuery Entry, PreparedModel Model)> Entries(IReadOnlyList<PlacedObject> placed,

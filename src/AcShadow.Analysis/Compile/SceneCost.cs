@@ -27,10 +27,14 @@ internal static class SceneCost
     /// <summary>Loading one candidate list: a mover range's flat array, or (a mover wider than a cell) one land cell's list.</summary>
     public const int LandCellVisit = 1;
 
-    /// <summary>Counted ops per position along <paramref name="walk"/>; <paramref name="partsApart"/>: the compiled scene's walk, each posed part an entry of its own (<see cref="PlacedParts"/>).</summary>
+    /// <summary>
+    /// Counted ops per position along <paramref name="walk"/>; <paramref name="partsApart"/>: the compiled scene's walk, each
+    /// posed part an entry of its own (<see cref="PlacedParts"/>); <paramref name="built"/>: the scene's query as it is
+    /// asked (its partition, and its whole-scene grids, <see cref="SceneReachGrid"/>, counted along their path).
+    /// </summary>
     public static double PerPosition(IReadOnlyList<PlacedObject> placed, IReadOnlyDictionary<(SceneObjectKind, uint), ObjectCompilation> compiled,
         IReadOnlyList<CellCompilation> cells, Func<ObjectCompilation, PreparedModel?> pick, IReadOnlyList<Probe> positions, int sample,
-        SceneWalk walk = SceneWalk.Partitioned, bool partsApart = false, BspReachGrids? grids = null)
+        SceneWalk walk = SceneWalk.Partitioned, bool partsApart = false, BspReachGrids? grids = null, SceneQuery? built = null)
     {
         if (positions.Count == 0 || sample < 1) return 0;
         var entries = SceneCompiler.Entries(placed, compiled, pick, partsApart).ToArray();
@@ -42,7 +46,9 @@ internal static class SceneCost
         }).ToArray();
         var cellCounters = cells.Where(c => c.Bsp is not null)
             .Select(c => (c.Frame, Counter: new QueryCost.Counter([new PreparedShape(CellShape, "cell", new PartPose(Vector3.Zero, Quaternion.Identity, 1f), c.Bsp)], grids: grids))).ToArray();
-        var query = new SceneQuery([.. entries.Select(e => e.Entry)], SceneCompiler.CellQueries(cells));
+        // The scene's own query when the caller has built it (the same entries in the same order), else one for the count.
+        var query = built ?? new SceneQuery([.. entries.Select(e => e.Entry)], SceneCompiler.CellQueries(cells));
+        if (query.Objects.Count != entries.Length) throw new ArgumentException($"{query.Objects.Count} entries in the query, {entries.Length} counted", nameof(built));
         var partition = query.Partition;
         CellReach[] cellReach = [.. query.CellReaches];
         var n = Math.Min(sample, positions.Count);
@@ -57,8 +63,54 @@ internal static class SceneCost
         long CountPartitioned(Vector3 center, float radius)
         {
             if (!SphereBounds.IsValidProbe(center, radius)) return 0;
+            foreach (var grid in query.Grids)
+                if (grid.Radius == radius) return CountGrid(grid, center, radius);
             var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = LandCellReach };
             partition.Any(center, radius, ref counting);
+            return counting.Ops;
+        }
+
+        // The whole-scene grid's path: the voxel lookup 1, then each open entry's broad phases (its object's sphere and
+        // its own bound) when the voxel leaves them open, the turns (the object's once per object, then the part's or
+        // the cell's) and its tree's frontier as the walk counts it; an entry asked whole counts as the walk asks it.
+        long CountGrid(SceneReachGrid grid, Vector3 center, float radius)
+        {
+            var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = GridLookup };
+            foreach (var e in grid.Always)
+                if (counting.Test(e)) return counting.Ops;
+            var (_, _, items) = grid.At(center);
+            object? frame = null;
+            foreach (var (entry, gated, program, guarded) in items)
+            {
+                if (program is null)
+                {
+                    if (counting.Test(entry)) break;
+                    continue;
+                }
+                if (entry >= objects.Length)
+                {
+                    var c = entry - objects.Length;
+                    if (gated && !cellReach[c].Reaches(center, radius)) { counting.Ops++; continue; }
+                    counting.Ops += (gated ? 1 : 0) + QueryCost.Transform;
+                    var cell = query.Cells[c].Query;
+                    counting.Ops += QueryCost.Frontier(cell.Tree.Bsp, program, guarded, cell.ToCell(center), radius, out var cellBlocked);
+                    if (cellBlocked) break;
+                    continue;
+                }
+                var placed = query.Objects[entry];
+                if (gated)
+                {
+                    counting.Ops += placed.Whole is null ? 1 : 2;
+                    if (placed.Whole is { } whole && !whole.Near(center, radius) || !placed.Near(center, radius)) continue;
+                }
+                if (!ReferenceEquals(frame, placed.FrameKey)) counting.Ops += QueryCost.Transform;
+                frame = placed.FrameKey;
+                var posed = (PosedQuery)placed.EntityQuery;
+                var (local, r) = placed.ToEntity(center, radius);
+                var (partLocal, partRadius) = posed.Pose.ToLocal(local, r);
+                counting.Ops += QueryCost.Transform + QueryCost.Frontier(PosedTree(posed).Bsp, program, guarded, partLocal, partRadius, out var blocked);
+                if (blocked) break;
+            }
             return counting.Ops;
         }
 
@@ -70,6 +122,15 @@ internal static class SceneCost
             return counting.Ops;
         }
     }
+
+    /// <summary>Finding a centre's voxel in the whole-scene grid: a few multiplies and an octree descent, about one distance evaluation.</summary>
+    public const int GridLookup = 1;
+
+    private static BspSphereQuery PosedTree(PosedQuery posed) => posed.PartQuery switch
+    {
+        IndexedBspQuery indexed => indexed.Tree,
+        _ => (BspSphereQuery)posed.PartQuery,
+    };
 
     /// <summary>An entry and its model's counter; its sphere tests are the entry's own (<see cref="PlacedQuery.Near"/>, the mover's radius stretched as the query stretches it).</summary>
     private sealed record ObjectCounter(PlacedQuery Entry, QueryCost.Counter Counter);

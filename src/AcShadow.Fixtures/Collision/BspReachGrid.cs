@@ -39,15 +39,8 @@ internal sealed class BspReachGrid
     /// <summary>A frontier cheaper than this (in nodes and polygons a walk would look at) is not split further.</summary>
     private const int SplitCost = 3;
 
-    // A frontier item: payload << 2 | tag. Node: payload node << 1 | centre check, walked from there. Polygon:
-    // payload the listed-polygon entry. Guard: payload node << 2 | kind, then the length of the block it guards,
-    // skipped when the guard fails. True: blocks.
-    private const int NodeTag = 0, PolygonTag = 1, GuardTag = 2, TrueItem = 3;
-    private const int SphereGuard = 0, PushesPosGuard = 1, PushesNegGuard = 2;
-
     private readonly BspSphereQuery _tree;
     private readonly CompiledBspNode[] _nodes;
-    private readonly CompiledBspNode _root;
     private readonly float _reach;
     private readonly Vector3 _origin;
     private readonly float _inverseFine;
@@ -71,7 +64,6 @@ internal sealed class BspReachGrid
     {
         _tree = tree;
         _nodes = tree.Nodes.ToArray();
-        _root = _nodes[0];
         Radius = radius;
         _reach = radius - PhysicsEpsilon.Value;
         _origin = origin;
@@ -109,58 +101,11 @@ internal sealed class BspReachGrid
         if (code == BlockedCode) return true;
         if (code == OutsideCode) return _tree.Overlaps(center, Radius);
         var frontier = Frontier(code, out var guarded);
-        if (guarded && !SphereBounds.BroadPhaseHits(_root, center, Radius)) return false;
-        if (code == GuardedBlockedCode) return true;
-        for (var i = 0; i < frontier.Length;)
-        {
-            var item = frontier[i++];
-            switch (item & 3)
-            {
-                case NodeTag:
-                    if (_tree.WalkFrom(item >> 3, (item & 4) != 0, center, Radius, _reach)) return true;
-                    break;
-                case PolygonTag:
-                    if (_tree.EntryTouches(item >> 2, center, Radius, _reach)) return true;
-                    break;
-                case GuardTag:
-                    var length = frontier[i++];
-                    if (!Passes(item >> 2, center)) i += length;
-                    break;
-                default:
-                    return true;
-            }
-        }
-        return false;
+        return BspBoxWalk.Run(_tree, frontier, guarded, center, Radius);
     }
 
-    /// <summary>A guard as the walk decides it at this centre: the node's sphere test, or whether it pushes that child.</summary>
-    internal bool Passes(int guard, Vector3 center)
-    {
-        ref readonly var node = ref _nodes[guard >> 2];
-        if ((guard & 3) == SphereGuard) return SphereBounds.NodeSphereHits(node, center, Radius);
-        var dist = PolygonPlane.Dot(node.Normal, center) + node.D;
-        return (guard & 3) == PushesPosGuard ? dist >= _reach || !(dist <= -_reach) : !(dist >= _reach);
-    }
-
-    internal static bool IsNodeItem(int item, out int node, out bool centreCheck)
-    {
-        node = item >> 3;
-        centreCheck = (item & 4) != 0;
-        return (item & 3) == NodeTag;
-    }
-
-    internal static bool IsPolygonItem(int item, out int entry)
-    {
-        entry = item >> 2;
-        return (item & 3) == PolygonTag;
-    }
-
-    /// <summary>A guard item: the guard to ask (<see cref="Passes"/>); the next int is the length of the block to skip when it fails.</summary>
-    internal static bool IsGuard(int item, out int guard)
-    {
-        guard = item >> 2;
-        return (item & 3) == GuardTag;
-    }
+    /// <summary>A guard as the walk decides it at this centre (<see cref="BspBoxWalk.Passes"/>).</summary>
+    internal bool Passes(int guard, Vector3 center) => BspBoxWalk.Passes(_nodes, guard, center, Radius, _reach);
 
     /// <summary>
     /// The code of the voxel holding a centre: <see cref="IsClear"/>, <see cref="IsBlocked"/>, a frontier or the
@@ -186,8 +131,8 @@ internal sealed class BspReachGrid
     internal static bool IsOutside(int code) => code == OutsideCode;
 
     /// <summary>
-    /// A cell's frontier (nodes, polygons, guards over blocks, true: <see cref="IsNodeItem"/>, <see cref="IsPolygonItem"/>,
-    /// <see cref="IsGuard"/>; anything else blocks), and whether the root's broad phase must pass first; a guarded
+    /// A cell's frontier (nodes, polygons, guards over blocks, true: <see cref="BspBoxWalk.IsNodeItem"/>, <see cref="BspBoxWalk.IsPolygonItem"/>,
+    /// <see cref="BspBoxWalk.IsGuard"/>; anything else blocks), and whether the root's broad phase must pass first; a guarded
     /// cell without items blocks when it passes. Empty for clear and blocked cells.
     /// </summary>
     internal ReadOnlySpan<int> Frontier(int code, out bool guarded)
@@ -214,10 +159,6 @@ internal sealed class BspReachGrid
         return (clear, blocked, frontier, guarded);
     }
 
-    private enum Tri { False, True, Mixed }
-
-    private readonly record struct Box(double LoX, double LoY, double LoZ, double HiX, double HiY, double HiZ);
-
     /// <summary>
     /// A cell waiting to be split: where its code is, its place at its level, and the frontier its children start
     /// from (null: the walk from the root; guarded: the root's broad phase still undecided).
@@ -227,34 +168,19 @@ internal sealed class BspReachGrid
     /// <summary>The build: deterministic (no threads, fixed orders), so the same tree always gives the same grid.</summary>
     private sealed class Builder
     {
-        /// <summary>Relative bound on the float rounding of a squared distance or of R + r squared, with room to spare.</summary>
-        private const double SquareSlack = 4e-6;
-        private const double Tiny = 1e-30;
-        /// <summary>Past this magnitude a float evaluation may overflow: the decision is left to the walk.</summary>
-        private const double Huge = 1e30;
-
-        private readonly CompiledBspNode[] _nodes;
-        private readonly Vector4[] _planes;
-        private readonly Vector4[] _spheres;
-        private readonly float _radius;
-        private readonly double _reach;
+        private readonly BspBoxWalk _walk;
         private readonly Vector3 _origin;
         private readonly double _fine;
         private readonly double _pad;
         private readonly int _top;
-        private readonly long[] _subtreeCost;
         private readonly List<int> _cells = [];
         private readonly List<int> _items = [];
         private readonly Dictionary<string, int> _frontiers = new(StringComparer.Ordinal);
-        private readonly List<int> _scratch = [];
 
         public Builder(BspSphereQuery tree, float radius, Vector3 origin, float inverseFine, int top)
         {
-            _nodes = tree.Nodes.ToArray();
-            _planes = tree.LeafPlanes.ToArray();
-            _spheres = tree.LeafSpheres.ToArray();
-            _radius = radius;
-            _reach = radius - PhysicsEpsilon.Value;
+            // A tree's index holds at most 4,096 cells: programs written per side would outgrow it, a walk from the node does not.
+            _walk = new BspBoxWalk(tree, radius, splitSides: false);
             _origin = origin;
             _fine = 1.0 / inverseFine;
             _top = top;
@@ -262,13 +188,6 @@ internal sealed class BspReachGrid
             // extent of the voxel's nominal box.
             var extent = _fine * (top << Levels);
             _pad = 1e-6 * (extent + Math.Abs(origin.X) + Math.Abs(origin.Y) + Math.Abs(origin.Z)) + 1e-6;
-            _subtreeCost = new long[_nodes.Length];
-            for (var i = _nodes.Length - 1; i >= 0; i--)
-            {
-                var node = _nodes[i];
-                _subtreeCost[i] = 1 + (node.IsLeaf ? node.PolygonCount
-                    : (node.Pos >= 0 ? _subtreeCost[node.Pos] : 0) + (node.Neg >= 0 ? _subtreeCost[node.Neg] : 0));
-            }
         }
 
         public (int[] Cells, int[] Items) Run()
@@ -302,103 +221,18 @@ internal sealed class BspReachGrid
         /// <summary>Classifies one cell from its parent's frontier, writes its code, and queues it for splitting when its frontier is worth it.</summary>
         private void Settle(Pending cell, List<Pending> pending)
         {
-            var box = BoxOf(cell.Level, cell.X, cell.Y, cell.Z);
-            _scratch.Clear();
-            var guarded = false;
-            if (cell.Guarded)
+            var settled = _walk.Settle(BoxOf(cell.Level, cell.X, cell.Y, cell.Z), cell.Items, cell.Guarded);
+            switch (settled.Outcome)
             {
-                var broad = BroadPhase(_nodes[0], box);
-                if (broad == Tri.False) { _cells[cell.Slot] = ClearCode; return; }
-                guarded = broad == Tri.Mixed;
+                case BspBoxWalk.Outcome.Clear:
+                    _cells[cell.Slot] = ClearCode;
+                    return;
+                case BspBoxWalk.Outcome.Blocked:
+                    _cells[cell.Slot] = settled.Guarded ? GuardedBlockedCode : BlockedCode;
+                    return;
             }
-            var blocked = cell.Items is null ? Visit(0, true, box) : Replay(cell.Items, 0, cell.Items.Length, box);
-            if (blocked) { _cells[cell.Slot] = guarded ? GuardedBlockedCode : BlockedCode; return; }
-            if (_scratch.Count == 0) { _cells[cell.Slot] = ClearCode; return; }
-            int[] items = [.. _scratch];
-            _cells[cell.Slot] = FrontierBase + Store(items, guarded);
-            long cost = guarded ? 1 : 0;
-            for (var i = 0; i < items.Length; i++)
-            {
-                cost += IsNodeItem(items[i], out var node, out _) ? _subtreeCost[node] : 1;
-                if (IsGuard(items[i], out _)) i++;
-            }
-            if (cell.Level < Levels && cost >= SplitCost) pending.Add(cell with { Items = items, Guarded = guarded, Cost = cost });
-        }
-
-        /// <summary>
-        /// A parent's frontier over a child's box: each node walked again as <see cref="Visit"/> walks it, each polygon
-        /// tested again, each guard decided again (a block whose guard now always passes is inlined, one that never
-        /// passes dropped). True when what is replayed blocks for every centre under the guards open around it.
-        /// </summary>
-        private bool Replay(int[] program, int from, int to, in Box box)
-        {
-            for (var i = from; i < to;)
-            {
-                var item = program[i++];
-                if (IsNodeItem(item, out var node, out var centreCheck)) { if (Visit(node, centreCheck, box)) return true; }
-                else if (IsPolygonItem(item, out var entry)) { if (!PolygonSkipped(entry, box)) _scratch.Add(item); }
-                else if (IsGuard(item, out var guard))
-                {
-                    var end = i + 1 + program[i];
-                    i++;
-                    switch (GuardOver(guard, box))
-                    {
-                        case Tri.True:
-                            if (Replay(program, i, end, box)) return true;
-                            break;
-                        case Tri.Mixed:
-                            var mark = Open(guard);
-                            Close(mark, Replay(program, i, end, box));
-                            break;
-                    }
-                    i = end;
-                }
-                else return true;
-            }
-            return false;
-        }
-
-        private Tri GuardOver(int guard, in Box box)
-        {
-            var node = _nodes[guard >> 2];
-            if ((guard & 3) == SphereGuard) return SphereHits(node.SphereCenter, node.SphereRadius, box);
-            var (atLeast, atMost) = Pushes(node, box);
-            return (guard & 3) == PushesPosGuard ? atLeast : atMost;
-        }
-
-        /// <summary>Whether the walk pushes the positive child (dist ≥ reach or not dist ≤ −reach) and the negative one (not dist ≥ reach), over the box.</summary>
-        private (Tri Pos, Tri Neg) Pushes(in CompiledBspNode node, in Box box)
-        {
-            var (min, max) = PlaneRange(node.Normal, node.D, box);
-            var positive = Compare(min, max, _reach, atLeast: true);
-            var negative = Compare(min, max, -_reach, atLeast: false);
-            return (Or(positive, Not(negative)), Not(positive));
-        }
-
-        private static Tri Not(Tri t) => t switch { Tri.True => Tri.False, Tri.False => Tri.True, _ => Tri.Mixed };
-
-        private static Tri Or(Tri a, Tri b) => a == Tri.True || b == Tri.True ? Tri.True : a == Tri.False && b == Tri.False ? Tri.False : Tri.Mixed;
-
-        /// <summary>Starts a guarded block: the guard, then its length, filled in by <see cref="Close"/>.</summary>
-        private int Open(int guard)
-        {
-            var mark = _scratch.Count;
-            _scratch.Add(guard << 2 | GuardTag);
-            _scratch.Add(0);
-            return mark;
-        }
-
-        /// <summary>Ends a guarded block: one that blocks whenever its guard passes becomes just that; an empty one is dropped.</summary>
-        private void Close(int mark, bool blocks)
-        {
-            if (blocks)
-            {
-                _scratch.RemoveRange(mark + 2, _scratch.Count - mark - 2);
-                _scratch.Add(TrueItem);
-            }
-            var length = _scratch.Count - mark - 2;
-            if (length == 0) _scratch.RemoveRange(mark, 2);
-            else _scratch[mark + 1] = length;
+            _cells[cell.Slot] = FrontierBase + Store(settled.Items, settled.Guarded);
+            if (cell.Level < Levels && settled.Cost >= SplitCost) pending.Add(cell with { Items = settled.Items, Guarded = settled.Guarded, Cost = settled.Cost });
         }
 
         /// <summary>Frontiers repeat from voxel to voxel: each distinct one is stored once.</summary>
@@ -413,154 +247,11 @@ internal sealed class BspReachGrid
             return offset;
         }
 
-        private Box BoxOf(int level, int x, int y, int z)
+        private CentreBox BoxOf(int level, int x, int y, int z)
         {
             var size = _fine * (1 << (Levels - level));
-            return new Box(_origin.X + x * size - _pad, _origin.Y + y * size - _pad, _origin.Z + z * size - _pad,
+            return new CentreBox(_origin.X + x * size - _pad, _origin.Y + y * size - _pad, _origin.Z + z * size - _pad,
                 _origin.X + (x + 1) * size + _pad, _origin.Y + (y + 1) * size + _pad, _origin.Z + (z + 1) * size + _pad);
-        }
-
-        /// <summary>
-        /// The walk of <see cref="BspSphereQuery.Overlaps"/> below one node over a box, the same decisions in the same
-        /// order: true when it reaches a solid leaf with its centre check on for every centre under the guards open
-        /// around it; what it cannot decide goes to <see cref="_scratch"/> as guards over blocks, polygons, or the
-        /// node itself where its children's centre checks would depend on the centre's side of its plane.
-        /// </summary>
-        private bool Visit(int index, bool centreCheck, in Box box)
-        {
-            var node = _nodes[index];
-            var sphere = node.IsLeaf && node.ListedPolygonCount == 0 ? Tri.False : SphereHits(node.SphereCenter, node.SphereRadius, box);
-            if (node.IsLeaf)
-            {
-                if (node.ListedPolygonCount == 0) return false;
-                if (centreCheck && node.Solid) return true;
-                if (sphere == Tri.False) return false;
-                var leafGuard = sphere == Tri.Mixed ? Open(index << 2 | SphereGuard) : -1;
-                for (var k = 0; k < node.PolygonCount; k++)
-                    if (!PolygonSkipped(node.PolygonStart + k, box)) _scratch.Add((node.PolygonStart + k) << 2 | PolygonTag);
-                if (leafGuard >= 0) Close(leafGuard, false);
-                return false;
-            }
-            if (sphere == Tri.False) return false;
-            var (min, max) = PlaneRange(node.Normal, node.D, box);
-            var positive = Compare(min, max, _reach, atLeast: true);
-            var negative = Compare(min, max, -_reach, atLeast: false);
-            var below = Compare(min, max, 0.0, atLeast: true) switch { Tri.True => Tri.False, Tri.False => Tri.True, _ => Tri.Mixed };
-            // Guards carry the pushes; the children's centre checks must come out the same wherever they are pushed,
-            // which needs the centre's side settled when the middle band (both children) is reachable with the check on.
-            var middle = positive != Tri.True && negative != Tri.True;
-            if ((_reach <= 0 && (positive == Tri.Mixed || negative == Tri.Mixed)) || (centreCheck && middle && below == Tri.Mixed))
-            {
-                _scratch.Add((index << 1 | (centreCheck ? 1 : 0)) << 2 | NodeTag);
-                return false;
-            }
-            var pushPos = Or(positive, Not(negative));
-            var pushNeg = Not(positive);
-            var posCheck = centreCheck && (positive == Tri.True || below == Tri.False);
-            var negCheck = centreCheck && (negative == Tri.True || below == Tri.True);
-            var nodeGuard = sphere == Tri.Mixed ? Open(index << 2 | SphereGuard) : -1;
-            var blocks = Branch(pushPos, node.Pos, posCheck, index << 2 | PushesPosGuard, box)
-                || Branch(pushNeg, node.Neg, negCheck, index << 2 | PushesNegGuard, box);
-            if (nodeGuard < 0) return blocks;
-            Close(nodeGuard, blocks);
-            return false;
-        }
-
-        /// <summary>One child as the walk pushes it: always, never, or behind its push guard.</summary>
-        private bool Branch(Tri pushed, int child, bool centreCheck, int guard, in Box box)
-        {
-            if (pushed == Tri.False || child < 0) return false;
-            if (pushed == Tri.True) return Visit(child, centreCheck, box);
-            var mark = Open(guard);
-            Close(mark, Visit(child, centreCheck, box));
-            return false;
-        }
-
-        /// <summary>True when LeafTouches rejects the entry for every centre of the box, by its plane or by its bounding sphere.</summary>
-        private bool PolygonSkipped(int entry, in Box box)
-        {
-            var plane = _planes[entry];
-            var (min, max) = PlaneRange(new Vector3(plane.X, plane.Y, plane.Z), plane.W, box);
-            var nearest = min > 0 ? min : max < 0 ? -max : 0.0;
-            if (nearest > _reach) return true;
-            var sphere = _spheres[entry];
-            var sum = sphere.W + _radius;
-            var (lo, _) = DistanceSquaredRange(new Vector3(sphere.X, sphere.Y, sphere.Z), box);
-            return lo * (1 - SquareSlack) - Tiny > (double)sum * sum * (1 + SquareSlack);
-        }
-
-        /// <summary>NodeSphereHits over the box: |Δ|² &lt; (R + r)².</summary>
-        private Tri SphereHits(Vector3 center, float radius, in Box box)
-        {
-            var sum = radius + _radius;
-            var limit = (double)sum * sum;
-            var (lo, hi) = DistanceSquaredRange(center, box);
-            if (!(hi < Huge)) return Tri.Mixed;
-            if (hi * (1 + SquareSlack) + Tiny < limit * (1 - SquareSlack)) return Tri.True;
-            if (lo * (1 - SquareSlack) - Tiny >= limit * (1 + SquareSlack)) return Tri.False;
-            return Tri.Mixed;
-        }
-
-        /// <summary>BroadPhaseHits over the box: |Δ|² − (R + r)² &lt; ε, the subtraction's rounding bounded too.</summary>
-        private Tri BroadPhase(in CompiledBspNode root, in Box box)
-        {
-            var sum = root.SphereRadius + _radius;
-            if (float.IsPositiveInfinity(sum * sum)) return Tri.True;
-            var limit = (double)sum * sum;
-            var (lo, hi) = DistanceSquaredRange(root.SphereCenter, box);
-            if (!(hi < Huge)) return Tri.Mixed;
-            var upper = hi * (1 + SquareSlack) + Tiny - limit * (1 - SquareSlack);
-            if (upper + Math.Abs(upper) * 1e-6 + Tiny < PhysicsEpsilon.Value) return Tri.True;
-            var lower = lo * (1 - SquareSlack) - Tiny - limit * (1 + SquareSlack);
-            if (lower - Math.Abs(lower) * 1e-6 - Tiny >= PhysicsEpsilon.Value) return Tri.False;
-            return Tri.Mixed;
-        }
-
-        /// <summary>dist ≥ value (atLeast) or dist ≤ value over the range of dist.</summary>
-        private static Tri Compare(double min, double max, double value, bool atLeast)
-        {
-            if (atLeast) return min >= value ? Tri.True : max < value ? Tri.False : Tri.Mixed;
-            return max <= value ? Tri.True : min > value ? Tri.False : Tri.Mixed;
-        }
-
-        /// <summary>
-        /// The range of dot(n, c) + d over the box, widened by a bound on the float evaluation's rounding (a few ulps
-        /// of the largest term); unbounded when a term could overflow a float.
-        /// </summary>
-        private static (double Min, double Max) PlaneRange(Vector3 n, float d, in Box box)
-        {
-            double min = d, max = d, scale = Math.Abs((double)d);
-            Term(n.X, box.LoX, box.HiX, ref min, ref max, ref scale);
-            Term(n.Y, box.LoY, box.HiY, ref min, ref max, ref scale);
-            Term(n.Z, box.LoZ, box.HiZ, ref min, ref max, ref scale);
-            if (!(scale < Huge)) return (double.NegativeInfinity, double.PositiveInfinity);
-            var slack = 1e-6 * scale + Tiny;
-            return (min - slack, max + slack);
-        }
-
-        private static void Term(double k, double lo, double hi, ref double min, ref double max, ref double scale)
-        {
-            min += k >= 0 ? k * lo : k * hi;
-            max += k >= 0 ? k * hi : k * lo;
-            scale += Math.Abs(k) * Math.Max(Math.Abs(lo), Math.Abs(hi));
-        }
-
-        /// <summary>The least and greatest squared distance from a point to the box.</summary>
-        private static (double Lo, double Hi) DistanceSquaredRange(Vector3 p, in Box box)
-        {
-            double lo = 0, hi = 0;
-            Axis(p.X, box.LoX, box.HiX, ref lo, ref hi);
-            Axis(p.Y, box.LoY, box.HiY, ref lo, ref hi);
-            Axis(p.Z, box.LoZ, box.HiZ, ref lo, ref hi);
-            return (lo, hi);
-        }
-
-        private static void Axis(double p, double lo, double hi, ref double near, ref double far)
-        {
-            var gap = p < lo ? lo - p : p > hi ? p - hi : 0.0;
-            var reach = Math.Max(Math.Abs(p - lo), Math.Abs(hi - p));
-            near += gap * gap;
-            far += reach * reach;
         }
     }
 }

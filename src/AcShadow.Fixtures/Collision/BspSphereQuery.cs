@@ -72,6 +72,21 @@ internal sealed class BspSphereQuery : ISphereOverlap
     /// <summary>One listed polygon (an index into the leaf order) as <see cref="LeafTouches"/> tests it.</summary>
     internal bool EntryTouches(int entry, Vector3 center, float radius, float reach) => LeafTouches(entry, 1, center, radius, reach);
 
+    /// <summary>
+    /// One listed polygon's first rejection alone, as <see cref="LeafTouches"/> and <see cref="PolygonSphereTest.Touches"/>
+    /// make it (|dist| &gt; r − ε, the same float operations): the whole test where the centre's contact point is
+    /// known to lie inside the polygon and its bounding sphere known to be met (<see cref="BspBoxWalk"/>).
+    /// </summary>
+    internal bool EntryReachesPlane(int entry, Vector3 center, float reach)
+    {
+        ref readonly var plane = ref _leafPlanes[entry];
+        var dist = plane.X * center.X + plane.Y * center.Y + plane.Z * center.Z + plane.W;
+        return !(MathF.Abs(dist) > reach);
+    }
+
+    /// <summary>A listed polygon by its entry in leaf order.</summary>
+    internal CompiledPolygon LeafPolygon(int entry) => _polygons[_leafPolygons[entry]];
+
     internal ReadOnlySpan<CompiledBspNode> Nodes => _nodes;
 
     /// <summary>The plane <see cref="LeafTouches"/> rejects a listed polygon by, per entry.</summary>

@@ -76,6 +76,12 @@ internal sealed class CellOverlapQuery : ISphereOverlap
         return _tree.Overlaps(_frame.GlobalToLocal(center), radius);
     }
 
+    /// <summary>The cell's frame as <see cref="Overlaps"/> turns a sphere into it.</summary>
+    internal ClientFrameMatrix Frame => _frame;
+
+    /// <summary>The cell's tree, as <see cref="Overlaps"/> asks it (directly or through its grids: the same answers).</summary>
+    internal BspSphereQuery Tree => _bsp;
+
     /// <summary>A point in the cell's own frame.</summary>
     public Vector3 ToCell(Vector3 point) => _frame.GlobalToLocal(point);
 

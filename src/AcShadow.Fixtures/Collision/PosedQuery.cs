@@ -28,6 +28,9 @@ internal sealed class PosedQuery : ISphereOverlap
     }
 
     public PartPose Pose { get; }
+
+    /// <summary>Whether <see cref="Overlaps"/> refuses by <see cref="Reach"/> before the turn (a placed part's entry has refused already).</summary>
+    public bool RefusesByReach => _refuses;
     public ISphereOverlap PartQuery { get; }
 
     /// <summary>Where in the entity frame the part can block (<see cref="PartReach.Everywhere"/> for a part query without a known bound).</summary>

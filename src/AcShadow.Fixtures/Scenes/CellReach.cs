@@ -16,6 +16,10 @@ internal readonly record struct CellReach(Vector3 Center, float Radius, bool Alw
             ? new CellReach(b.Center, b.Radius + 0.05f, false)
             : new CellReach(Vector3.Zero, 0f, true);
 
+    /// <summary><see cref="Reaches"/> over a box of centres.</summary>
+    public Collision.BoxDecision ReachesOver(in Collision.CentreBox box, float radius) =>
+        Always ? Collision.BoxDecision.True : box.Within(Center, Radius + radius * 1.001f);
+
     public bool Reaches(Vector3 center, float radius)
     {
         if (Always) return true;

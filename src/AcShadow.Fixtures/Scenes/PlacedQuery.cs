@@ -84,6 +84,15 @@ internal sealed class PlacedQuery
         return dx * dx + dy * dy + dz * dz <= sum * sum;
     }
 
+    /// <summary><see cref="Near"/> over a box of centres (<see cref="CentreBox.Within"/>), and the distance it tests within (infinite or NaN: none).</summary>
+    public BoxDecision NearOver(in CentreBox box, float radius) => box.Within(_boundInLandblock, NearDistance(radius));
+
+    /// <summary>The distance from <see cref="LandblockBound"/>'s centre within which <see cref="Near"/> passes, as it computes it.</summary>
+    public float NearDistance(float radius) => _reach + radius * _stretch;
+
+    /// <summary>The matrix <see cref="ToEntity"/> turns with.</summary>
+    public ClientFrameMatrix Matrix => _matrix;
+
     /// <summary>The sphere in the object's frame (Frame::globaltolocal with the matrix built once).</summary>
     public (Vector3 Center, float Radius) ToEntity(Vector3 center, float radius) => Frame.ToLocal(_matrix, center, radius);
 }

@@ -19,8 +19,12 @@ internal sealed class SceneQuery : ISphereOverlap
     private readonly PlacedQuery[] _objects;
     private readonly SceneCell[] _cells;
     private readonly CellReach[] _cellReach;
+    private readonly SceneReachGrid[] _grids;
 
-    public SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList<SceneCell>? cells = null)
+    /// <param name="objects">The placed objects (or parts), in scene order.</param>
+    /// <param name="cells">The indoor cells.</param>
+    /// <param name="gridRadii">Mover radii to decide the whole scene for ahead of time (<see cref="SceneReachGrid"/>): the compiled scene's.</param>
+    public SceneQuery(IReadOnlyList<PlacedQuery> objects, IReadOnlyList<SceneCell>? cells = null, IReadOnlyList<float>? gridRadii = null)
     {
         _objects = [.. objects];
         _cells = [.. cells ?? []];
@@ -28,7 +32,11 @@ internal sealed class SceneQuery : ISphereOverlap
         Partition = LandCellPartition.Build([.. _objects.Select(o => ((Vector3, float)?)o.LandblockBound), .. _cells.Select(c => c.Query.Bound)],
             _objects.Aggregate(1f, (most, o) => MathF.Max(most, o.RadiusStretch)));
         Exhaustive = new ExhaustiveWalk(_objects, _cells);
+        _grids = [.. (gridRadii ?? []).Distinct().Select(r => SceneReachGrid.Build(_objects, _cells, _cellReach, r)).OfType<SceneReachGrid>()];
     }
+
+    /// <summary>The whole-scene grids, one per mover radius asked for.</summary>
+    public IReadOnlyList<SceneReachGrid> Grids => _grids;
 
     public IReadOnlyList<PlacedQuery> Objects => _objects;
 
@@ -40,12 +48,14 @@ internal sealed class SceneQuery : ISphereOverlap
     /// <summary>The land cells the objects (entries 0..n-1) and then the cells (entries n..) are registered in.</summary>
     public LandCellPartition Partition { get; }
 
-    /// <summary>The same question asked of every object and every cell, in order: the walk the partition must agree with.</summary>
+    /// <summary>The same question asked of every object and every cell, in order: the walk the partition (and every grid) must agree with.</summary>
     public ISphereOverlap Exhaustive { get; }
 
     public bool Overlaps(Vector3 center, float radius)
     {
         if (!SphereBounds.IsValidProbe(center, radius)) return false;
+        foreach (var grid in _grids)
+            if (grid.Radius == radius) return grid.Overlaps(center);
         var test = new EntryTest(_objects, _cells, _cellReach, center, radius);
         return Partition.Any(center, radius, ref test);
     }

@@ -228,7 +228,7 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     }
 
     /// <summary>Every object's and every cell's probes moved into the landblock, as the scene's totals ask them.</summary>
-    private static IEnumerable<(Vector3 At, float Radius)> Positions(CompiledSceneReport report)
+    internal static IEnumerable<(Vector3 At, float Radius)> Positions(CompiledSceneReport report)
     {
         foreach (var placed in report.Placed)
         {
@@ -245,7 +245,7 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     /// plane, and above and below), and every metre along every land-cell edge line the bound crosses or nears, at
     /// offsets of 0, ±r/2, ±r and ±(r + 1 mm) from the edge — for radii 0.25, 0.5 and 1.5 m.
     /// </summary>
-    private static IEnumerable<(Vector3 At, float Radius)> EdgePositions(SceneQuery query)
+    internal static IEnumerable<(Vector3 At, float Radius)> EdgePositions(SceneQuery query)
     {
         var bounds = query.Objects.Select(o => o.LandblockBound).Concat(query.Cells.Select(c => c.Query.Bound).OfType<(Vector3 Center, float Radius)>());
         foreach (var (center, radius) in bounds)
