@@ -75,8 +75,6 @@ internal sealed class BspBoxWalk
         }
     }
 
-    public float Radius => _radius;
-
     /// <summary>A program that blocks (behind the broad phase when guarded): what a blocked box runs as a frontier.</summary>
     public static ReadOnlySpan<int> Blocks => [TrueItem];
 

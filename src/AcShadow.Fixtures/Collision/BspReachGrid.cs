@@ -40,8 +40,6 @@ internal sealed class BspReachGrid
     private const int SplitCost = 3;
 
     private readonly BspSphereQuery _tree;
-    private readonly CompiledBspNode[] _nodes;
-    private readonly float _reach;
     private readonly Vector3 _origin;
     private readonly float _inverseFine;
     private readonly int _top;
@@ -63,9 +61,7 @@ internal sealed class BspReachGrid
     private BspReachGrid(BspSphereQuery tree, float radius, Vector3 origin, float inverseFine, int top, int[] cells, int[] items)
     {
         _tree = tree;
-        _nodes = tree.Nodes.ToArray();
         Radius = radius;
-        _reach = radius - PhysicsEpsilon.Value;
         _origin = origin;
         _inverseFine = inverseFine;
         _top = top;
@@ -103,9 +99,6 @@ internal sealed class BspReachGrid
         var frontier = Frontier(code, out var guarded);
         return BspBoxWalk.Run(_tree, frontier, guarded, center, Radius);
     }
-
-    /// <summary>A guard as the walk decides it at this centre (<see cref="BspBoxWalk.Passes"/>).</summary>
-    internal bool Passes(int guard, Vector3 center) => BspBoxWalk.Passes(_nodes, guard, center, Radius, _reach);
 
     /// <summary>
     /// The code of the voxel holding a centre: <see cref="IsClear"/>, <see cref="IsBlocked"/>, a frontier or the
