@@ -110,11 +110,7 @@ internal sealed class BspReachGrid
         var fy = (center.Y - _origin.Y) * _inverseFine;
         var fz = (center.Z - _origin.Z) * _inverseFine;
         if (!(fx >= 0f && fx < _fine && fy >= 0f && fy < _fine && fz >= 0f && fz < _fine)) return OutsideCode;
-        int ix = (int)fx, iy = (int)fy, iz = (int)fz;
-        var code = _cells[((ix >> Levels) * _top + (iy >> Levels)) * _top + (iz >> Levels)];
-        for (var level = Levels - 1; code < 0; level--)
-            code = _cells[-code + ((ix >> level) & 1 | ((iy >> level) & 1) << 1 | ((iz >> level) & 1) << 2)];
-        return code;
+        return VoxelOctree.Code(_cells, (int)fx, (int)fy, (int)fz, _top, _top, Levels);
     }
 
     internal static bool IsClear(int code) => code == ClearCode;

@@ -186,11 +186,7 @@ internal sealed class SceneReachGrid
         var fy = (center.Y - _origin.Y) * _inverseFine;
         var fz = (center.Z - _origin.Z) * _inverseFine;
         if (!(fx >= 0f && fx < _fineX && fy >= 0f && fy < _fineY && fz >= 0f && fz < _fineZ)) return ClearCode;
-        int ix = (int)fx, iy = (int)fy, iz = (int)fz;
-        var code = _codes[((ix >> Levels) * _topY + (iy >> Levels)) * _topZ + (iz >> Levels)];
-        for (var level = Levels - 1; code < 0; level--)
-            code = _codes[-code + ((ix >> level) & 1 | ((iy >> level) & 1) << 1 | ((iz >> level) & 1) << 2)];
-        return code;
+        return VoxelOctree.Code(_codes, (int)fx, (int)fy, (int)fz, _topY, _topZ, Levels);
     }
 
     /// <summary>One entry open over a cell: its program (null: asked whole) and guard, and whether its broad phases are asked first.</summary>
