@@ -204,7 +204,7 @@ internal sealed class BspReachGrid
                         Settle(new Pending(first + k, level + 1, cell.X * 2 + (k & 1), cell.Y * 2 + (k >> 1 & 1), cell.Z * 2 + (k >> 2 & 1), cell.Items, cell.Guarded, 0), pending);
                 }
             }
-            return ([.. _cells], [.. _items]);
+            return (VoxelOctree.DepthFirst([.. _cells], _top * _top * _top), [.. _items]);
         }
 
         /// <summary>Classifies one cell from its parent's frontier, writes its code, and queues it for splitting when its frontier is worth it.</summary>

@@ -15,4 +15,30 @@ internal static class VoxelOctree
             code = cells[-code + ((x >> level) & 1 | ((y >> level) & 1) << 1 | ((z >> level) & 1) << 2)];
         return code;
     }
+
+    /// <summary>
+    /// The same octree with each top cell's subtree stored in one run, depth first (a cell's eight children, then each
+    /// child's subtree in turn). A build splits level by level, so one descent otherwise reads as many distant places as
+    /// it has levels; laid out this way it stays within a few neighbouring cache lines. Codes other than child indexes
+    /// are kept as they are.
+    /// </summary>
+    public static int[] DepthFirst(int[] cells, int topCount)
+    {
+        var laid = new int[cells.Length];
+        Array.Copy(cells, laid, topCount);
+        var next = topCount;
+        for (var top = 0; top < topCount; top++)
+            if (cells[top] < 0) laid[top] = -LayOut(cells, laid, -cells[top], ref next);
+        return laid;
+    }
+
+    /// <summary>Copies the eight children at <paramref name="from"/> and their subtrees to <paramref name="next"/> onward; returns where the eight went.</summary>
+    private static int LayOut(int[] cells, int[] laid, int from, ref int next)
+    {
+        var to = next;
+        next += 8;
+        for (var k = 0; k < 8; k++)
+            laid[to + k] = cells[from + k] < 0 ? -LayOut(cells, laid, -cells[from + k], ref next) : cells[from + k];
+        return to;
+    }
 }

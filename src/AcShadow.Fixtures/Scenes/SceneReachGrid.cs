@@ -331,8 +331,9 @@ internal sealed class SceneReachGrid
             return Result(_origin, inverseFine, (_topX, _topY, _topZ));
         }
 
-        private SceneReachGrid Result(Vector3 origin, float inverseFine, (int, int, int) top) =>
-            new(_objects, _cells, _cellReach, _targets, [.. _always], _radius, origin, inverseFine, top, [.. _codes], [.. _frontiers], [.. _programs]);
+        private SceneReachGrid Result(Vector3 origin, float inverseFine, (int X, int Y, int Z) top) =>
+            new(_objects, _cells, _cellReach, _targets, [.. _always], _radius, origin, inverseFine, top,
+                VoxelOctree.DepthFirst([.. _codes], top.X * top.Y * top.Z), [.. _frontiers], [.. _programs]);
 
         private int Top(double v, float origin, int count) => Math.Clamp((int)Math.Floor((v - origin) / (_fine * (1 << Levels))), 0, count - 1);
 
