@@ -386,10 +386,10 @@ internal sealed class BspBoxWalk
         var n = polygon.Normal;
         var maxDist = Math.Max(Math.Abs(distMin), Math.Abs(distMax));
         var reach = Math.Max(Math.Max(Math.Max(Math.Abs(box.LoX), Math.Abs(box.HiX)), Math.Max(Math.Abs(box.LoY), Math.Abs(box.HiY))), Math.Max(Math.Abs(box.LoZ), Math.Abs(box.HiZ)));
-        for (var i = 0; i < polygon.Inward.Length; i++)
+        foreach (var edge in polygon.Edges)
         {
-            var w = polygon.Inward[i];
-            var start = polygon.EdgeStart[i];
+            var w = edge.Inward;
+            var start = edge.Start;
             var startReach = Math.Max(Math.Abs((double)start.X), Math.Max(Math.Abs((double)start.Y), Math.Abs((double)start.Z)));
             // side(c) = w · (c − start) − (w · n) · dist(c), dist(c) = n · c + d: affine in c with these coefficients.
             double wn = (double)w.X * n.X + (double)w.Y * n.Y + (double)w.Z * n.Z;

@@ -18,11 +18,8 @@ internal sealed class CompiledPolygon
     public float D { get; }
     public ImmutableArray<Vector3> Vertices { get; }
 
-    internal readonly Vector3[] EdgeStart;
-    internal readonly Vector3[] Edge;
-    internal readonly float[] EdgeLengthSquared;
-    internal readonly Vector3[] Inward;
-    internal readonly float[] InwardLengthSquared;
+    /// <summary>The edges in CPolygon's order, each in one piece (<see cref="PolygonEdge"/>).</summary>
+    internal readonly PolygonEdge[] Edges;
 
     public CompiledPolygon(int id, Plane plane, Vector3[] vertices)
     {
@@ -33,21 +30,13 @@ internal sealed class CompiledPolygon
         vertices = [.. vertices];
         Vertices = ImmutableCollectionsMarshal.AsImmutableArray(vertices);
         var n = vertices.Length;
-        EdgeStart = new Vector3[n];
-        Edge = new Vector3[n];
-        EdgeLengthSquared = new float[n];
-        Inward = new Vector3[n];
-        InwardLengthSquared = new float[n];
+        Edges = new PolygonEdge[n];
         for (var i = 0; i < n; i++)
         {
             var previous = vertices[i == 0 ? n - 1 : i - 1];
             var edge = Vec.Sub(vertices[i], previous);
             var inward = Vec.Cross(plane.Normal, edge);
-            EdgeStart[i] = previous;
-            Edge[i] = edge;
-            EdgeLengthSquared[i] = PolygonPlane.Dot(edge, edge);
-            Inward[i] = inward;
-            InwardLengthSquared[i] = PolygonPlane.Dot(inward, inward);
+            Edges[i] = new PolygonEdge(previous, edge, PolygonPlane.Dot(edge, edge), inward, PolygonPlane.Dot(inward, inward));
         }
     }
 

@@ -27,23 +27,24 @@ internal static class PolygonSphereTest
         var n = polygon.Normal;
         var contact = new Vector3(center.X - n.X * dist, center.Y - n.Y * dist, center.Z - n.Z * dist);
 
-        var edges = polygon.Edge.Length;
+        var edges = polygon.Edges;
         var inside = true;
-        for (var i = 0; i < edges; i++)
+        for (var i = 0; i < edges.Length; i++)
         {
-            if (PolygonPlane.Dot(Vec.Sub(contact, polygon.EdgeStart[i]), polygon.Inward[i]) < 0f) { inside = false; break; }
+            if (PolygonPlane.Dot(Vec.Sub(contact, edges[i].Start), edges[i].Inward) < 0f) { inside = false; break; }
         }
         if (inside) return true;
 
-        for (var i = 0; i < edges; i++)
+        for (var i = 0; i < edges.Length; i++)
         {
-            var disp = Vec.Sub(contact, polygon.EdgeStart[i]);
-            var side = PolygonPlane.Dot(disp, polygon.Inward[i]);
+            ref readonly var edge = ref edges[i];
+            var disp = Vec.Sub(contact, edge.Start);
+            var side = PolygonPlane.Dot(disp, edge.Inward);
             if (side < 0f)
             {
-                if (polygon.InwardLengthSquared[i] * discSquared < side * side) return false;
-                var along = PolygonPlane.Dot(disp, polygon.Edge[i]);
-                if (along >= 0f && along <= polygon.EdgeLengthSquared[i]) return true;
+                if (edge.InwardLengthSquared * discSquared < side * side) return false;
+                var along = PolygonPlane.Dot(disp, edge.Vector);
+                if (along >= 0f && along <= edge.LengthSquared) return true;
             }
             if (PolygonPlane.Dot(disp, disp) <= discSquared) return true;
         }

@@ -19,12 +19,13 @@ internal static class SurfaceDistance
         var n = polygon.Normal;
         var foot = new Vector3(point.X - n.X * dist, point.Y - n.Y * dist, point.Z - n.Z * dist);
         var inside = true;
-        for (var i = 0; i < polygon.Edge.Length && inside; i++)
-            inside = PolygonPlane.Dot(Vec.Sub(foot, polygon.EdgeStart[i]), polygon.Inward[i]) >= 0f;
+        var edges = polygon.Edges;
+        for (var i = 0; i < edges.Length && inside; i++)
+            inside = PolygonPlane.Dot(Vec.Sub(foot, edges[i].Start), edges[i].Inward) >= 0f;
         if (inside) return MathF.Abs(dist);
         var best = float.PositiveInfinity;
-        for (var i = 0; i < polygon.Edge.Length; i++)
-            best = MathF.Min(best, ToSegment(polygon.EdgeStart[i], polygon.Edge[i], polygon.EdgeLengthSquared[i], point));
+        foreach (var edge in edges)
+            best = MathF.Min(best, ToSegment(edge.Start, edge.Vector, edge.LengthSquared, point));
         return best;
     }
 

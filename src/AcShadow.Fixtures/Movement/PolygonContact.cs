@@ -66,15 +66,15 @@ internal static class PolygonContact
         var dropped = center - MoveMath.Scale(up, (MoveMath.Dot(polygon.Normal, center) + polygon.D) / angleUp);
         var radiusSquared = radius * radius;
         if (small) radiusSquared *= 0.25f;
-        for (var i = 0; i < polygon.Edge.Length; i++)
+        foreach (var edge in polygon.Edges)
         {
-            var disp = dropped - polygon.EdgeStart[i];
-            var side = MoveMath.Dot(disp, polygon.Inward[i]);
+            var disp = dropped - edge.Start;
+            var side = MoveMath.Dot(disp, edge.Inward);
             if (side < 0f)
             {
-                if (polygon.InwardLengthSquared[i] * radiusSquared < side * side) return false;
-                var along = MoveMath.Dot(disp, polygon.Edge[i]);
-                return along >= 0f && along <= polygon.EdgeLengthSquared[i];
+                if (edge.InwardLengthSquared * radiusSquared < side * side) return false;
+                var along = MoveMath.Dot(disp, edge.Vector);
+                return along >= 0f && along <= edge.LengthSquared;
             }
             if (MoveMath.LengthSquared(disp) <= radiusSquared) return true;
         }
@@ -88,12 +88,12 @@ internal static class PolygonContact
         var angleUp = MoveMath.Dot(polygon.Normal, up);
         if (MathF.Abs(angleUp) < MovementConstants.Epsilon) return false;
         var dropped = center - MoveMath.Scale(up, (MoveMath.Dot(polygon.Normal, center) + polygon.D) / angleUp);
-        for (var i = 0; i < polygon.Edge.Length; i++)
+        foreach (var edge in polygon.Edges)
         {
-            var disp = dropped - polygon.EdgeStart[i];
-            if (MoveMath.Dot(disp, polygon.Inward[i]) < 0f)
+            var disp = dropped - edge.Start;
+            if (MoveMath.Dot(disp, edge.Inward) < 0f)
             {
-                normal = MoveMath.Scale(polygon.Inward[i], 1f / MathF.Sqrt(polygon.InwardLengthSquared[i]));
+                normal = MoveMath.Scale(edge.Inward, 1f / MathF.Sqrt(edge.InwardLengthSquared));
                 return true;
             }
         }
