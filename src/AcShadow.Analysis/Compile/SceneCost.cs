@@ -72,7 +72,8 @@ internal static class SceneCost
 
         // The whole-scene grid's path: the voxel lookup 1, then each open entry's broad phases (its object's sphere and
         // its own bound) when the voxel leaves them open, the turns (the object's once per object, then the part's or
-        // the cell's) and its tree's frontier as the walk counts it; an entry asked whole counts as the walk asks it.
+        // the cell's) and its tree's frontier as the walk counts it; an entry asked whole counts its model (or the
+        // cell's tree) from the turn on, as the grid asks it.
         long CountGrid(SceneReachGrid grid, Vector3 center, float radius)
         {
             var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = GridLookup };
@@ -82,22 +83,28 @@ internal static class SceneCost
             object? frame = null;
             foreach (var (entry, gated, program, guarded) in items)
             {
-                if (program is null)
-                {
-                    if (counting.Test(entry)) break;
-                    continue;
-                }
                 if (entry >= objects.Length)
                 {
                     var c = entry - objects.Length;
                     if (gated && !cellReach[c].Reaches(center, radius)) { counting.Ops++; continue; }
-                    counting.Ops += (gated ? 1 : 0) + QueryCost.Transform;
-                    var cell = query.Cells[c].Query;
-                    counting.Ops += QueryCost.Frontier(cell.Tree.Bsp, program, guarded, cell.ToCell(center), radius, out var cellBlocked);
+                    counting.Ops += gated ? 1 : 0;
+                    bool cellBlocked;
+                    if (program is null)
+                    {
+                        // Asked whole: the cell's turn, then its tree's count.
+                        var (cellFrame, counter) = cellCounters[c];
+                        var (cellLocal, cellRadius) = cellFrame.ToLocal(center, radius);
+                        counting.Ops += counter.Count(cellLocal, cellRadius, out cellBlocked);
+                    }
+                    else
+                    {
+                        var cell = query.Cells[c].Query;
+                        counting.Ops += QueryCost.Transform + QueryCost.Frontier(cell.Tree.Bsp, program, guarded, cell.ToCell(center), radius, out cellBlocked);
+                    }
                     if (cellBlocked) break;
                     continue;
                 }
-                var placed = query.Objects[entry];
+                var (placed, model) = objects[entry];
                 if (gated)
                 {
                     counting.Ops += placed.Whole is null ? 1 : 2;
@@ -105,10 +112,17 @@ internal static class SceneCost
                 }
                 if (!ReferenceEquals(frame, placed.FrameKey)) counting.Ops += QueryCost.Transform;
                 frame = placed.FrameKey;
-                var posed = (PosedQuery)placed.EntityQuery;
                 var (local, r) = placed.ToEntity(center, radius);
-                var (partLocal, partRadius) = posed.Pose.ToLocal(local, r);
-                counting.Ops += QueryCost.Transform + QueryCost.Frontier(PosedTree(posed).Bsp, program, guarded, partLocal, partRadius, out var blocked);
+                bool blocked;
+                if (program is null)
+                    // Asked whole from the turn on: the model's own count.
+                    counting.Ops += model.Count(local, r, out blocked);
+                else
+                {
+                    var posed = (PosedQuery)placed.EntityQuery;
+                    var (partLocal, partRadius) = posed.Pose.ToLocal(local, r);
+                    counting.Ops += QueryCost.Transform + QueryCost.Frontier(PosedTree(posed).Bsp, program, guarded, partLocal, partRadius, out blocked);
+                }
                 if (blocked) break;
             }
             return counting.Ops;

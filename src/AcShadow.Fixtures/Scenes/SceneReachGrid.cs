@@ -99,25 +99,24 @@ internal sealed class SceneReachGrid
             var entry = head >> 1;
             var program = _frontiers[at + 1];
             if ((head & 1) != 0 && !Gate(entry, center)) continue;
+            if (entry < _objects.Length && !ReferenceEquals(_objects[entry].FrameKey, frame))
+            {
+                // The parts of one object share the turn into its frame: the same float operations each time.
+                (local, localRadius) = _objects[entry].ToEntity(center, Radius);
+                frame = _objects[entry].FrameKey;
+            }
             if (program < 0)
             {
-                if (AskWhole(entry, center)) return true;
+                // Asked whole behind its broad phases, which the voxel settled (passing over all of it) or which were
+                // asked just above: the entry's own test from the turn on.
+                if (entry < _objects.Length ? _objects[entry].EntityQuery.Overlaps(local, localRadius) : _cells[entry - _objects.Length].Query.Overlaps(center, Radius))
+                    return true;
                 continue;
             }
             var target = _targets[entry]!;
             Vector3 turned;
             float turnedRadius;
-            if (entry < _objects.Length)
-            {
-                var o = _objects[entry];
-                if (!ReferenceEquals(o.FrameKey, frame))
-                {
-                    // The parts of one object share the turn into its frame: the same float operations each time.
-                    (local, localRadius) = o.ToEntity(center, Radius);
-                    frame = o.FrameKey;
-                }
-                (turned, turnedRadius) = target.Pose!.Value.ToLocal(target.Matrix, local, localRadius);
-            }
+            if (entry < _objects.Length) (turned, turnedRadius) = target.Pose!.Value.ToLocal(target.Matrix, local, localRadius);
             else (turned, turnedRadius) = (target.Matrix.GlobalToLocal(center), Radius);
             var header = _programs[program];
             if (BspBoxWalk.Run(target.Tree, _programs.AsSpan(program + 1, header >> 1), (header & 1) != 0, turned, turnedRadius)) return true;
