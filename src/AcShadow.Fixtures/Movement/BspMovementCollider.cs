@@ -20,7 +20,7 @@ internal sealed class BspMovementCollider(BspPart part)
     {
         if (_tree.IsEmpty) return TransitionState.OK;
         var path = transition.Path;
-        path.CacheLocalSpaceSphere(part.Pose);
+        path.CacheLocalSpaceSphere(part.Pose, _matrix);
         for (var i = 0; i < path.NumSphere; i++)
         {
             var sphere = path.LocalSpaceSphere[i];

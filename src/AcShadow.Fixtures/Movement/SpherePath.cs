@@ -133,20 +133,21 @@ internal sealed class SpherePath
     // SPHEREPATH::cache_localspace_sphere: both spheres at the check and current positions, in part space. Each goes
     // from the mover's own sphere (Position::localtolocal), not from the cached global one, which
     // add_offset_to_check_pos may have shifted with its own rounding.
-    public void CacheLocalSpaceSphere(PartPose pose)
+    // The part's matrix is the caller's, built once per part (Frame::cache), not once per sphere.
+    public void CacheLocalSpaceSphere(PartPose pose, in ClientFrameMatrix matrix)
     {
         for (var i = 0; i < NumSphere; i++)
         {
-            LocalSpaceSphere[i] = Local(pose, LocalToGlobal(CheckPos, LocalSphere[i].Center), LocalSphere[i].Radius);
-            LocalSpaceCurrCenter[i] = Local(pose, LocalToGlobal(CurPos, LocalSphere[i].Center), LocalSphere[i].Radius).Center;
+            LocalSpaceSphere[i] = Local(pose, matrix, LocalToGlobal(CheckPos, LocalSphere[i].Center), LocalSphere[i].Radius);
+            LocalSpaceCurrCenter[i] = Local(pose, matrix, LocalToGlobal(CurPos, LocalSphere[i].Center), LocalSphere[i].Radius).Center;
         }
         LocalSpacePos = pose;
-        LocalSpaceZ = pose.Matrix.LocalUp();
+        LocalSpaceZ = matrix.LocalUp();
     }
 
-    private static Sphere Local(PartPose pose, Vector3 center, float radius)
+    private static Sphere Local(PartPose pose, in ClientFrameMatrix matrix, Vector3 center, float radius)
     {
-        var (c, r) = pose.ToLocal(center, radius);
+        var (c, r) = pose.ToLocal(matrix, center, radius);
         return new Sphere(c, r);
     }
 
