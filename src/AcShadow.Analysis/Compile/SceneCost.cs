@@ -10,7 +10,7 @@ namespace AcShadow.Analysis.Compile;
 /// <summary>
 /// What asking the whole scene about one mover position costs, counted as <see cref="QueryCost"/> counts
 /// an object (one unit a distance evaluation), along the walk <see cref="SceneQuery"/> takes: the sphere's
-/// land cells found <see cref="LandCellReach"/> a range, their candidate list loaded <see cref="LandCellVisit"/>, then
+/// land cells found <see cref="LandCellReach"/>, their candidate list loaded <see cref="LandCellVisit"/>, then
 /// for each object (or, the compiled scene, each part: <see cref="PlacedParts"/>) it holds its bounding sphere 1
 /// and, for a position inside it, the turn into the object's frame and its model's count (each posed part's reach
 /// in the entity frame 1 before its turn: <see cref="PartReach"/>); for each indoor cell registered there its root sphere in the
@@ -21,7 +21,11 @@ namespace AcShadow.Analysis.Compile;
 /// </summary>
 internal static class SceneCost
 {
-    /// <summary>Finding one of the sphere's land-cell ranges (its plain one, and its stretched one when the scene has stretched entries): four floors and a clamp, about one distance evaluation.</summary>
+    /// <summary>
+    /// Finding the sphere's land cells: its cell and its offset in it (a division, a floor and a multiply an axis), then
+    /// a compare a side for the plain range and, with stretched entries, one for the stretched range, and the clamps;
+    /// about one distance evaluation.
+    /// </summary>
     public const int LandCellReach = 1;
 
     /// <summary>Loading one candidate list: a mover range's flat array, or (a mover wider than a cell) one land cell's list.</summary>
@@ -65,7 +69,7 @@ internal static class SceneCost
             if (!SphereBounds.IsValidProbe(center, radius)) return 0;
             foreach (var grid in query.Grids)
                 if (grid.Radius == radius) return CountGrid(grid, center, radius);
-            var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = LandCellReach * partition.RangesFound };
+            var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = LandCellReach };
             partition.Any(center, radius, ref counting);
             return counting.Ops;
         }

@@ -90,9 +90,6 @@ internal sealed class LandCellPartition
     /// <summary>How many entries are found by the stretched range.</summary>
     public int Stretched => _stretched.Count(s => s);
 
-    /// <summary>How many ranges a query finds: the plain one, and the stretched entries' when there are any.</summary>
-    public int RangesFound => _widenings == 1 ? 1 : 2;
-
     /// <summary>How many land cells hold at least one entry.</summary>
     public int OccupiedCells => _cells.Count(c => c.Length > 0);
 
@@ -276,24 +273,38 @@ internal sealed class LandCellPartition
     {
         (plain, plainMet, wide) = (default, false, default);
         if (_width == 0 || !float.IsFinite(center.X) || !float.IsFinite(center.Y) || !float.IsFinite(radius) || radius < 0f) return false;
-        plainMet = Range(center, Pad(radius * _plainStretch), out plain);
+        double plainPad = Pad(radius * _plainStretch), widePad = _widenings == 1 ? plainPad : Pad(radius * _wideStretch);
+        // The centre's cell and how far into it the centre lies, found once for both ranges; a range under a cell's
+        // side is that cell and each neighbour whose edge is nearer than the pad (check_add_cell_boundary).
+        double cellX = Math.Floor(center.X / CellSize), cellY = Math.Floor(center.Y / CellSize);
+        double intoX = center.X - cellX * CellSize, intoY = center.Y - cellY * CellSize;
+        plainMet = plainPad < CellSize
+            ? Clamped(cellX - (intoX < plainPad ? 1 : 0), cellY - (intoY < plainPad ? 1 : 0),
+                cellX + (CellSize - intoX <= plainPad ? 1 : 0), cellY + (CellSize - intoY <= plainPad ? 1 : 0), out plain)
+            : Clamped(center, plainPad, out plain);
         if (_widenings == 1)
         {
             wide = plain;
             return plainMet;
         }
-        return Range(center, Pad(radius * _wideStretch), out wide);
+        return widePad < CellSize
+            ? Clamped(cellX - (intoX < widePad ? 1 : 0), cellY - (intoY < widePad ? 1 : 0),
+                cellX + (CellSize - intoX <= widePad ? 1 : 0), cellY + (CellSize - intoY <= widePad ? 1 : 0), out wide)
+            : Clamped(center, widePad, out wide);
     }
 
-    /// <summary>The grid's cells within <paramref name="pad"/> of the centre's x and y (false: none).</summary>
-    private bool Range(Vector3 center, double pad, out CellRange cells)
+    /// <summary>The grid's cells within <paramref name="pad"/> of the centre's x and y, however wide (false: none).</summary>
+    private bool Clamped(Vector3 center, double pad, out CellRange cells) =>
+        Clamped(Math.Floor((center.X - pad) / CellSize), Math.Floor((center.Y - pad) / CellSize),
+            Math.Floor((center.X + pad) / CellSize), Math.Floor((center.Y + pad) / CellSize), out cells);
+
+    /// <summary>Cells x0..x1 by y0..y1 clamped to the grid (false: they miss it).</summary>
+    private bool Clamped(double x0, double y0, double x1, double y1, out CellRange cells)
     {
         cells = default;
-        double fx0 = Math.Floor((center.X - pad) / CellSize), fx1 = Math.Floor((center.X + pad) / CellSize);
-        double fy0 = Math.Floor((center.Y - pad) / CellSize), fy1 = Math.Floor((center.Y + pad) / CellSize);
         int gx1 = _x0 + _width - 1, gy1 = _y0 + _height - 1;
-        if (fx1 < _x0 || fx0 > gx1 || fy1 < _y0 || fy0 > gy1) return false;
-        cells = new CellRange((int)Math.Max(fx0, _x0), (int)Math.Max(fy0, _y0), (int)Math.Min(fx1, gx1), (int)Math.Min(fy1, gy1));
+        if (x1 < _x0 || x0 > gx1 || y1 < _y0 || y0 > gy1) return false;
+        cells = new CellRange((int)Math.Max(x0, _x0), (int)Math.Max(y0, _y0), (int)Math.Min(x1, gx1), (int)Math.Min(y1, gy1));
         return true;
     }
 
