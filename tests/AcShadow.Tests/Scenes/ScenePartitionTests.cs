@@ -180,6 +180,38 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
     }
 
     [Fact]
+    public void An_object_turned_by_a_not_quite_unit_quaternion_is_registered_by_the_reach_its_broad_phase_tests()
+    {
+        // A half turn about z stored with |q|² = 1.0009 (Frame::IsValid keeps it): the matrix is s·R + (1 − s)·I, so a
+        // sphere 60 m out along the entity's x blocks centres 4(s − 1)·60 = 0.22 m further along landblock x than its
+        // bound moved into the landblock (plus the mover's r), more than the partition's pads (0.05 m and 0.1 % each
+        // side). Registered by its plain sphere, whose footprint ends in land cell 0, it is never asked by a mover
+        // whose range lies in cell 1; registered by its broad phase's reach, it is.
+        var turn = new Quaternion(0f, 0f, MathF.Sqrt(1.0009f), 0f);
+        var sphere = new Vector3(60f, 0f, 0f);
+        PlacedQuery Placed(Vector3 position) => new(0, 0x02000001u, position, turn, new SphereShapeQuery(sphere, 0.5f), sphere, 0.5f);
+        var probe = Placed(Vector3.Zero);
+        var offset = 24f - (0.5f * 1.001f + 0.05f) - 0.01f - probe.LandblockBound.Center.X;
+        var scene = new SceneQuery([Placed(new Vector3(offset, 100f, 10f))]);
+        var entry = scene.Objects[0];
+        Assert.True(LandCellPartition.Footprint(entry.LandblockBound.Center, entry.BoundRadius) is { X1: 0 });
+        // The furthest blocked centre along +x, 1 mm inside.
+        float inside = 0f, outside = 2f;
+        for (var i = 0; i < 40; i++)
+        {
+            var mid = (inside + outside) / 2;
+            if (entry.Overlaps(entry.LandblockBound.Center + new Vector3(mid, 0f, 0f), 0.5f)) inside = mid; else outside = mid;
+        }
+        var at = entry.LandblockBound.Center + new Vector3(inside - 1e-3f, 0f, 0f);
+        Assert.True(inside > 0.5f + 0.5f + 0.2f, $"blocked {inside} m out");
+        Assert.True(at.X - (0.5f * entry.RadiusStretch * 1.001f + 0.05f) > 24f, $"{at}: the mover's range is all in cell 1");
+        Assert.True(entry.Overlaps(at, 0.5f));
+        Assert.True(scene.Exhaustive.Overlaps(at, 0.5f));
+        Assert.True(scene.Overlaps(at, 0.5f));
+        Assert.True(scene.Partition.Reaches(0, at, 0.5f));
+    }
+
+    [Fact]
     public void A_range_s_flat_candidates_are_the_cell_walk_s_entries_in_its_order_each_once()
     {
         // Bounds of every size over and around a landblock; movers from a centimetre to beyond a cell (the
