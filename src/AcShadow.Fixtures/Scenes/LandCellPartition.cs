@@ -274,24 +274,24 @@ internal sealed class LandCellPartition
         (plain, plainMet, wide) = (default, false, default);
         if (_width == 0 || !float.IsFinite(center.X) || !float.IsFinite(center.Y) || !float.IsFinite(radius) || radius < 0f) return false;
         double plainPad = Pad(radius * _plainStretch), widePad = _widenings == 1 ? plainPad : Pad(radius * _wideStretch);
-        // The centre's cell and how far into it the centre lies, found once for both ranges; a range under a cell's
-        // side is that cell and each neighbour whose edge is nearer than the pad (check_add_cell_boundary).
+        if (!(widePad < CellSize))
+        {
+            plainMet = Clamped(center, plainPad, out plain);
+            wide = plain;
+            return _widenings == 1 ? plainMet : Clamped(center, widePad, out wide);
+        }
+        // Both ranges under a cell's side, by one formula so that the stretched range holds the plain one: the
+        // centre's cell, found once, and each neighbour whose edge is nearer than the pad (check_add_cell_boundary).
         double cellX = Math.Floor(center.X / CellSize), cellY = Math.Floor(center.Y / CellSize);
         double intoX = center.X - cellX * CellSize, intoY = center.Y - cellY * CellSize;
-        plainMet = plainPad < CellSize
-            ? Clamped(cellX - (intoX < plainPad ? 1 : 0), cellY - (intoY < plainPad ? 1 : 0),
-                cellX + (CellSize - intoX <= plainPad ? 1 : 0), cellY + (CellSize - intoY <= plainPad ? 1 : 0), out plain)
-            : Clamped(center, plainPad, out plain);
-        if (_widenings == 1)
-        {
-            wide = plain;
-            return plainMet;
-        }
-        return widePad < CellSize
-            ? Clamped(cellX - (intoX < widePad ? 1 : 0), cellY - (intoY < widePad ? 1 : 0),
-                cellX + (CellSize - intoX <= widePad ? 1 : 0), cellY + (CellSize - intoY <= widePad ? 1 : 0), out wide)
-            : Clamped(center, widePad, out wide);
+        plainMet = Neighbours(cellX, cellY, intoX, intoY, plainPad, out plain);
+        wide = plain;
+        return _widenings == 1 ? plainMet : Neighbours(cellX, cellY, intoX, intoY, widePad, out wide);
     }
+
+    /// <summary>Cell (x, y) and each neighbour whose edge is nearer than <paramref name="pad"/> to a centre (intoX, intoY) into it, clamped to the grid.</summary>
+    private bool Neighbours(double x, double y, double intoX, double intoY, double pad, out CellRange cells) =>
+        Clamped(x - (intoX < pad ? 1 : 0), y - (intoY < pad ? 1 : 0), x + (CellSize - intoX <= pad ? 1 : 0), y + (CellSize - intoY <= pad ? 1 : 0), out cells);
 
     /// <summary>The grid's cells within <paramref name="pad"/> of the centre's x and y, however wide (false: none).</summary>
     private bool Clamped(Vector3 center, double pad, out CellRange cells) =>
