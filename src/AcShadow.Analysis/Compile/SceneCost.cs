@@ -21,7 +21,11 @@ namespace AcShadow.Analysis.Compile;
 /// </summary>
 internal static class SceneCost
 {
-    /// <summary>Finding the sphere's land cells: four floors and a clamp, about one distance evaluation.</summary>
+    /// <summary>
+    /// Finding the sphere's land cells: its cell and its offset in it (a division, a floor and a multiply an axis), then
+    /// a compare a side for the plain range and, with stretched entries, one for the stretched range, and the clamps;
+    /// about one distance evaluation.
+    /// </summary>
     public const int LandCellReach = 1;
 
     /// <summary>Loading one candidate list: a mover range's flat array, or (a mover wider than a cell) one land cell's list.</summary>

@@ -15,15 +15,20 @@ namespace AcShadow.Fixtures.Scenes;
 /// r of — check_add_cell_boundary).</item>
 /// </list>
 /// Both footprints are padded (<see cref="Pad"/>) beyond the float rounding of the bound tests the entries
-/// make themselves, the mover's radius first stretched by the largest factor an entry's bound test puts on it (a
-/// CylSphere's box profile reaches √2·r past its object's sphere, <see cref="Collision.BoundStretch"/>), so a
-/// sphere whose exhaustive bound test passes always shares a land cell with the entry:
-/// the partition only skips entries that cannot answer, and answers are the exhaustive walk's, bit for bit.
-/// An entry asked in several of the mover's cells is asked once (in the first cell, y then x, of the overlap).
+/// make themselves, the mover's radius first stretched by the factor an entry's bound test puts on it. Two
+/// ranges, so that a few stretched entries do not widen every query: the plain entries (stretch at most
+/// <see cref="PlainStretch"/>: spheres, trees, a part's reach, a not quite unit quaternion) are found with the
+/// radius times their largest stretch, the stretched ones (a CylSphere's box profile reaches √2·r past its
+/// object's sphere, <see cref="Collision.BoundStretch"/>) with the radius times theirs. So a sphere whose
+/// exhaustive bound test passes always shares a land cell of its range with the entry: the partition only skips
+/// entries that cannot answer, and answers are the exhaustive walk's, bit for bit.
+/// An entry asked in several of the mover's cells is asked once (in the first cell, y then x, of the overlap of
+/// its footprint and its range), plain and stretched entries in one walk over the cells, in each cell's order.
 /// An entry whose bound is missing, not finite or wider than <see cref="MaxSpan"/> cells is asked everywhere.
-/// A mover's cells are at most 3 x 3 while its radius is under a cell (every mover the scenes declare): for
-/// each such range the walk's candidates (deduplicated, in the walk's order) are one flat array built here,
-/// so a query is one index and one loop; a wider range walks the cells' lists, with the same answers.
+/// A mover's plain range is at most 3 x 3 cells while its radius is under a cell (every mover the scenes declare),
+/// its stretched range at most one cell wider each side: for each such pair of ranges the walk's candidates
+/// (deduplicated, in the walk's order) are one flat array built here, so a query is one index and one loop;
+/// other ranges walk the cells' lists, with the same answers.
 /// </summary>
 internal sealed class LandCellPartition
 {
@@ -33,23 +38,36 @@ internal sealed class LandCellPartition
     /// <summary>Footprints wider than this many cells are asked at every position instead.</summary>
     public const int MaxSpan = 16;
 
+    /// <summary>
+    /// The widest stretch an entry may put on the mover's radius and still be found by the plain range: a part's
+    /// reach (1 + 1e-4 over its turn's least σ) and a quaternion a little off unit (1 + 4 |1 − |q|²|) stay under it;
+    /// a CylSphere's √2 does not.
+    /// </summary>
+    public const float PlainStretch = 1.01f;
+
     /// <summary>How far from the landblock, in cells, the grid may run; beyond it an entry is asked everywhere.</summary>
     private const int MaxReach = 64;
 
-    private readonly int _x0, _y0, _width, _height;
-    private readonly float _radiusStretch;
-    private readonly int[][] _cells;
-    private readonly int[] _everywhere;
-    private readonly CellRange[] _footprints;
-    private readonly int[][] _ranges;
-
     /// <summary>The widest mover range, in cells a side, that has a flat candidate array.</summary>
     private const int FlatSpan = 3;
+
+    private readonly int _x0, _y0, _width, _height;
+    private readonly float _plainStretch, _wideStretch;
+    private readonly int[][] _cells;
+    private readonly bool[] _cellHoldsStretched;
+    private readonly int[] _everywhere;
+    private readonly CellRange[] _footprints;
+    private readonly bool[] _stretched;
+    /// <summary>Flat arrays per plain range: 1, or (stretched entries present) 16, one per side the stretched range reaches a cell further.</summary>
+    private readonly int _widenings;
+    private readonly int[]?[] _ranges;
 
     /// <summary>Land cells x0..x1 by y0..y1, inclusive (cell i spans [24 i, 24 (i + 1)) metres).</summary>
     public readonly record struct CellRange(int X0, int Y0, int X1, int Y1)
     {
         public bool Meets(CellRange other) => X0 <= other.X1 && other.X0 <= X1 && Y0 <= other.Y1 && other.Y0 <= Y1;
+
+        public bool Holds(int x, int y) => X0 <= x && x <= X1 && Y0 <= y && y <= Y1;
 
         public int Cells => (X1 - X0 + 1) * (Y1 - Y0 + 1);
     }
@@ -69,27 +87,35 @@ internal sealed class LandCellPartition
     /// <summary>How many entries are asked at every position (no footprint).</summary>
     public int Everywhere => _everywhere.Length;
 
+    /// <summary>How many entries are found by the stretched range.</summary>
+    public int Stretched => _stretched.Count(s => s);
+
     /// <summary>How many land cells hold at least one entry.</summary>
     public int OccupiedCells => _cells.Count(c => c.Length > 0);
 
-    private LandCellPartition(int x0, int y0, int width, int height, int[][] cells, int[] everywhere, CellRange[] footprints, float radiusStretch)
+    private LandCellPartition(int x0, int y0, int width, int height, int[][] cells, int[] everywhere, CellRange[] footprints, bool[] stretched,
+        float plainStretch, float wideStretch)
     {
         (_x0, _y0, _width, _height) = (x0, y0, width, height);
-        _radiusStretch = radiusStretch;
+        (_plainStretch, _wideStretch) = (plainStretch, wideStretch);
         _cells = cells;
         _everywhere = everywhere;
         _footprints = footprints;
+        _stretched = stretched;
+        _cellHoldsStretched = [.. cells.Select(c => c.Any(e => stretched[e]))];
+        _widenings = stretched.Any(s => s) ? 16 : 1;
         _ranges = FlatRanges();
     }
 
     /// <summary>
-    /// For every range of at most <see cref="FlatSpan"/> x <see cref="FlatSpan"/> cells inside the grid, the
-    /// entries the cell-by-cell walk asks there, in its order, each once (index: <see cref="RangeIndex"/>).
+    /// For every plain range of at most <see cref="FlatSpan"/> x <see cref="FlatSpan"/> cells inside the grid, and
+    /// every widening of it the stretched range can take inside the grid, the entries the cell-by-cell walk asks
+    /// there, in its order, each once (index: <see cref="FlatIndex"/>; null where the widening leaves the grid).
     /// </summary>
-    private int[][] FlatRanges()
+    private int[]?[] FlatRanges()
     {
-        var ranges = new int[_width * _height * FlatSpan * FlatSpan][];
-        var list = new List<int>();
+        var ranges = new int[]?[_width * _height * FlatSpan * FlatSpan * _widenings];
+        var listed = new Listed([]);
         for (var y0 = _y0; y0 < _y0 + _height; y0++)
             for (var x0 = _x0; x0 < _x0 + _width; x0++)
                 for (var h = 1; h <= FlatSpan; h++)
@@ -97,18 +123,28 @@ internal sealed class LandCellPartition
                     {
                         var q = new CellRange(x0, y0, x0 + w - 1, y0 + h - 1);
                         if (q.X1 >= _x0 + _width || q.Y1 >= _y0 + _height) continue;
-                        list.Clear();
-                        for (var y = q.Y0; y <= q.Y1; y++)
-                            for (var x = q.X0; x <= q.X1; x++)
-                                foreach (var e in _cells[(y - _y0) * _width + (x - _x0)])
-                                    if (IsFirstShared(e, q, x, y)) list.Add(e);
-                        ranges[RangeIndex(q)] = list.Count == 0 ? [] : [.. list];
+                        int[] unwidened = [];
+                        for (var widening = 0; widening < _widenings; widening++)
+                        {
+                            var wide = Widened(q, widening);
+                            if (wide.X0 < _x0 || wide.Y0 < _y0 || wide.X1 >= _x0 + _width || wide.Y1 >= _y0 + _height) continue;
+                            listed.Entries.Clear();
+                            Walk(q, true, wide, ref listed);
+                            int[] list = listed.Entries.Count == 0 ? [] : [.. listed.Entries];
+                            if (widening == 0) unwidened = list;
+                            // Most widenings reach no further stretched entry: they share the plain range's array.
+                            ranges[FlatIndex(q, widening)] = list.AsSpan().SequenceEqual(unwidened) ? unwidened : list;
+                        }
                     }
         return ranges;
     }
 
-    private int RangeIndex(CellRange q) =>
-        (((q.Y0 - _y0) * _width + (q.X0 - _x0)) * FlatSpan + (q.Y1 - q.Y0)) * FlatSpan + (q.X1 - q.X0);
+    /// <summary>Range <paramref name="q"/> a cell wider on each side whose bit is set: 1 west, 2 east, 4 south, 8 north.</summary>
+    private static CellRange Widened(CellRange q, int widening) =>
+        new(q.X0 - (widening & 1), q.Y0 - (widening >> 2 & 1), q.X1 + (widening >> 1 & 1), q.Y1 + (widening >> 3 & 1));
+
+    private int FlatIndex(CellRange q, int widening) =>
+        ((((q.Y0 - _y0) * _width + (q.X0 - _x0)) * FlatSpan + (q.Y1 - q.Y0)) * FlatSpan + (q.X1 - q.X0)) * _widenings + widening;
 
     /// <summary>Is (x, y) the first cell, y then x, that entry <paramref name="e"/>'s footprint and range <paramref name="q"/> share.</summary>
     private bool IsFirstShared(int e, CellRange q, int x, int y)
@@ -118,15 +154,19 @@ internal sealed class LandCellPartition
     }
 
     /// <summary>
-    /// The partition of entries with these landblock-relative bounds (null: asked everywhere). Entry order is
-    /// kept within every cell's list. <paramref name="radiusStretch"/>: the largest factor any entry's bound test puts
-    /// on the mover's radius (<see cref="PlacedQuery.RadiusStretch"/>); a mover's range is padded by its radius times it.
+    /// The partition of entries with these landblock-relative bounds (null: asked everywhere), each putting its
+    /// stretch (<paramref name="stretches"/>, in the same order; none: 1) on the mover's radius
+    /// (<see cref="PlacedQuery.RadiusStretch"/>). Entry order is kept within every cell's list.
     /// </summary>
-    public static LandCellPartition Build(IReadOnlyList<(Vector3 Center, float Radius)?> bounds, float radiusStretch = 1f)
+    public static LandCellPartition Build(IReadOnlyList<(Vector3 Center, float Radius)?> bounds, IReadOnlyList<float>? stretches = null)
     {
-        if (!(radiusStretch >= 1f) || !float.IsFinite(radiusStretch))
-            throw new ArgumentOutOfRangeException(nameof(radiusStretch), radiusStretch, "a radius stretch is finite and at least 1");
+        if (stretches is not null && stretches.Count != bounds.Count)
+            throw new ArgumentException($"{stretches.Count} stretches for {bounds.Count} bounds", nameof(stretches));
+        foreach (var s in stretches ?? [])
+            if (!(s >= 1f) || !float.IsFinite(s)) throw new ArgumentOutOfRangeException(nameof(stretches), s, "a radius stretch is finite and at least 1");
         var footprints = new CellRange[bounds.Count];
+        var stretched = new bool[bounds.Count];
+        float plainStretch = 1f, wideStretch = 1f;
         var everywhere = new List<int>();
         int x0 = int.MaxValue, y0 = int.MaxValue, x1 = int.MinValue, y1 = int.MinValue;
         for (var i = 0; i < bounds.Count; i++)
@@ -138,9 +178,14 @@ internal sealed class LandCellPartition
                 continue;
             }
             footprints[i] = f;
+            var stretch = stretches?[i] ?? 1f;
+            stretched[i] = stretch > PlainStretch;
+            if (stretched[i]) wideStretch = MathF.Max(wideStretch, stretch);
+            else plainStretch = MathF.Max(plainStretch, stretch);
             (x0, y0, x1, y1) = (Math.Min(x0, f.X0), Math.Min(y0, f.Y0), Math.Max(x1, f.X1), Math.Max(y1, f.Y1));
         }
-        if (x0 > x1) return new LandCellPartition(0, 0, 0, 0, [], [.. everywhere], footprints, radiusStretch);
+        wideStretch = MathF.Max(wideStretch, plainStretch);
+        if (x0 > x1) return new LandCellPartition(0, 0, 0, 0, [], [.. everywhere], footprints, stretched, plainStretch, wideStretch);
         int width = x1 - x0 + 1, height = y1 - y0 + 1;
         var lists = new List<int>[width * height];
         for (var i = 0; i < footprints.Length; i++)
@@ -151,7 +196,8 @@ internal sealed class LandCellPartition
                 for (var x = f.X0; x <= f.X1; x++)
                     (lists[(y - y0) * width + (x - x0)] ??= []).Add(i);
         }
-        return new LandCellPartition(x0, y0, width, height, [.. lists.Select(l => l is null ? [] : l.ToArray())], [.. everywhere], footprints, radiusStretch);
+        return new LandCellPartition(x0, y0, width, height, [.. lists.Select(l => l is null ? [] : l.ToArray())], [.. everywhere], footprints, stretched,
+            plainStretch, wideStretch);
     }
 
     /// <summary>
@@ -162,44 +208,103 @@ internal sealed class LandCellPartition
     {
         foreach (var e in _everywhere)
             if (test.Test(e)) return true;
-        if (!Reach(center, radius, out var q)) return false;
-        if (q.X1 - q.X0 < FlatSpan && q.Y1 - q.Y0 < FlatSpan)
+        if (!Ranges(center, radius, out var plain, out var plainMet, out var wide)) return false;
+        if (plainMet && plain.X1 - plain.X0 < FlatSpan && plain.Y1 - plain.Y0 < FlatSpan
+            && plain.X0 - wide.X0 <= 1 && plain.Y0 - wide.Y0 <= 1 && wide.X1 - plain.X1 <= 1 && wide.Y1 - plain.Y1 <= 1)
         {
+            var widening = (plain.X0 - wide.X0) | (wide.X1 - plain.X1) << 1 | (plain.Y0 - wide.Y0) << 2 | (wide.Y1 - plain.Y1) << 3;
             test.Visit();
-            foreach (var e in _ranges[RangeIndex(q)])
+            foreach (var e in _ranges[FlatIndex(plain, widening)]!)
                 if (test.Test(e)) return true;
             return false;
         }
-        for (var y = q.Y0; y <= q.Y1; y++)
-            for (var x = q.X0; x <= q.X1; x++)
+        return Walk(plain, plainMet, wide, ref test);
+    }
+
+    /// <summary>
+    /// The cell-by-cell walk over the stretched range (the plain one within it): each cell holding an entry either
+    /// range asks, each such entry in the cell's order, asked in the first cell its footprint and its own range share.
+    /// </summary>
+    private bool Walk<T>(CellRange plain, bool plainMet, CellRange wide, ref T test) where T : struct, IEntryTest
+    {
+        for (var y = wide.Y0; y <= wide.Y1; y++)
+            for (var x = wide.X0; x <= wide.X1; x++)
             {
+                var cell = (y - _y0) * _width + (x - _x0);
+                var inPlain = plainMet && plain.Holds(x, y);
+                if (!inPlain && !_cellHoldsStretched[cell]) continue;
                 test.Visit();
-                foreach (var e in _cells[(y - _y0) * _width + (x - _x0)])
-                    // Asked in the first cell both ranges share, so once however many cells it covers.
-                    if (IsFirstShared(e, q, x, y) && test.Test(e)) return true;
+                foreach (var e in _cells[cell])
+                    if ((_stretched[e] ? IsFirstShared(e, wide, x, y) : inPlain && IsFirstShared(e, plain, x, y)) && test.Test(e)) return true;
             }
         return false;
     }
 
-    /// <summary>Can the sphere reach entry <paramref name="entry"/>: is it asked everywhere, or does its footprint meet the sphere's?</summary>
+    /// <summary>Can the sphere reach entry <paramref name="entry"/>: is it asked everywhere, or does its footprint meet its range?</summary>
     public bool Reaches(int entry, Vector3 center, float radius)
     {
         var f = _footprints[entry];
         if (f.X0 > f.X1) return true;
-        return Reach(center, radius, out var q) && f.Meets(q);
+        return Reach(center, radius, out var q, _stretched[entry]) && f.Meets(q);
     }
 
-    /// <summary>The land cells of the grid a mover sphere is asked in (false: none, the sphere is beyond every footprint).</summary>
-    public bool Reach(Vector3 center, float radius, out CellRange cells)
+    /// <summary>
+    /// The land cells of the grid a mover sphere asks the plain entries in, or (<paramref name="stretched"/>) the
+    /// stretched ones (false: none, the range is beyond every footprint).
+    /// </summary>
+    public bool Reach(Vector3 center, float radius, out CellRange cells, bool stretched = false)
     {
         cells = default;
+        if (!Ranges(center, radius, out var plain, out var plainMet, out var wide)) return false;
+        if (stretched)
+        {
+            cells = wide;
+            return true;
+        }
+        cells = plain;
+        return plainMet;
+    }
+
+    /// <summary>
+    /// The sphere's plain range (<paramref name="plainMet"/>: it meets the grid) and its stretched range, which holds it;
+    /// false when the stretched range misses the grid. Without stretched entries both are the plain range.
+    /// </summary>
+    private bool Ranges(Vector3 center, float radius, out CellRange plain, out bool plainMet, out CellRange wide)
+    {
+        (plain, plainMet, wide) = (default, false, default);
         if (_width == 0 || !float.IsFinite(center.X) || !float.IsFinite(center.Y) || !float.IsFinite(radius) || radius < 0f) return false;
-        var pad = Pad(radius * _radiusStretch);
-        double fx0 = Math.Floor((center.X - pad) / CellSize), fx1 = Math.Floor((center.X + pad) / CellSize);
-        double fy0 = Math.Floor((center.Y - pad) / CellSize), fy1 = Math.Floor((center.Y + pad) / CellSize);
+        double plainPad = Pad(radius * _plainStretch), widePad = _widenings == 1 ? plainPad : Pad(radius * _wideStretch);
+        if (!(widePad < CellSize))
+        {
+            plainMet = Clamped(center, plainPad, out plain);
+            wide = plain;
+            return _widenings == 1 ? plainMet : Clamped(center, widePad, out wide);
+        }
+        // Both ranges under a cell's side, by one formula so that the stretched range holds the plain one: the
+        // centre's cell, found once, and each neighbour whose edge is nearer than the pad (check_add_cell_boundary).
+        double cellX = Math.Floor(center.X / CellSize), cellY = Math.Floor(center.Y / CellSize);
+        double intoX = center.X - cellX * CellSize, intoY = center.Y - cellY * CellSize;
+        plainMet = Neighbours(cellX, cellY, intoX, intoY, plainPad, out plain);
+        wide = plain;
+        return _widenings == 1 ? plainMet : Neighbours(cellX, cellY, intoX, intoY, widePad, out wide);
+    }
+
+    /// <summary>Cell (x, y) and each neighbour whose edge is nearer than <paramref name="pad"/> to a centre (intoX, intoY) into it, clamped to the grid.</summary>
+    private bool Neighbours(double x, double y, double intoX, double intoY, double pad, out CellRange cells) =>
+        Clamped(x - (intoX < pad ? 1 : 0), y - (intoY < pad ? 1 : 0), x + (CellSize - intoX <= pad ? 1 : 0), y + (CellSize - intoY <= pad ? 1 : 0), out cells);
+
+    /// <summary>The grid's cells within <paramref name="pad"/> of the centre's x and y, however wide (false: none).</summary>
+    private bool Clamped(Vector3 center, double pad, out CellRange cells) =>
+        Clamped(Math.Floor((center.X - pad) / CellSize), Math.Floor((center.Y - pad) / CellSize),
+            Math.Floor((center.X + pad) / CellSize), Math.Floor((center.Y + pad) / CellSize), out cells);
+
+    /// <summary>Cells x0..x1 by y0..y1 clamped to the grid (false: they miss it).</summary>
+    private bool Clamped(double x0, double y0, double x1, double y1, out CellRange cells)
+    {
+        cells = default;
         int gx1 = _x0 + _width - 1, gy1 = _y0 + _height - 1;
-        if (fx1 < _x0 || fx0 > gx1 || fy1 < _y0 || fy0 > gy1) return false;
-        cells = new CellRange((int)Math.Max(fx0, _x0), (int)Math.Max(fy0, _y0), (int)Math.Min(fx1, gx1), (int)Math.Min(fy1, gy1));
+        if (x1 < _x0 || x0 > gx1 || y1 < _y0 || y0 > gy1) return false;
+        cells = new CellRange((int)Math.Max(x0, _x0), (int)Math.Max(y0, _y0), (int)Math.Min(x1, gx1), (int)Math.Min(y1, gy1));
         return true;
     }
 
@@ -224,4 +329,18 @@ internal sealed class LandCellPartition
     /// of the distance) — 0.05 m and 1e-3 of the radius. Too wide only costs a cell; too narrow would drop an answer.
     /// </summary>
     private static double Pad(float radius) => radius * 1.001 + 0.05;
+
+    /// <summary>Collects the entries a walk asks, in its order (the flat arrays' build).</summary>
+    private readonly struct Listed(List<int> entries) : IEntryTest
+    {
+        public List<int> Entries => entries;
+
+        public bool Test(int entry)
+        {
+            entries.Add(entry);
+            return false;
+        }
+
+        public void Visit() { }
+    }
 }

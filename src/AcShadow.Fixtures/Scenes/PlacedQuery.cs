@@ -53,6 +53,12 @@ internal sealed class PlacedQuery
     /// <summary>The bounding sphere in the landblock's frame, as <see cref="Overlaps"/> tests it first (with the mover's radius times <see cref="RadiusStretch"/>).</summary>
     public (Vector3 Center, float Radius) LandblockBound => (_boundInLandblock, BoundRadius);
 
+    /// <summary>
+    /// The sphere <see cref="Near"/> passes within for a zero radius, in the landblock's frame: the bound widened by
+    /// what a not quite unit quaternion moves it (nothing for a unit one), as a partition registers the entry.
+    /// </summary>
+    public (Vector3 Center, float Radius) LandblockReach => (_boundInLandblock, _reach);
+
     /// <summary>The factor <see cref="Near"/> puts on the mover's radius (at least 1): a partition pads a mover's range by it.</summary>
     public float RadiusStretch => _stretch;
 

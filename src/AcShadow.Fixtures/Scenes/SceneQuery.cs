@@ -29,8 +29,10 @@ internal sealed class SceneQuery : ISphereOverlap
         _objects = [.. objects];
         _cells = [.. cells ?? []];
         _cellReach = [.. _cells.Select(c => CellReach.Of(c.Query.Bound))];
-        Partition = LandCellPartition.Build([.. _objects.Select(o => ((Vector3, float)?)o.LandblockBound), .. _cells.Select(c => c.Query.Bound)],
-            _objects.Aggregate(1f, (most, o) => MathF.Max(most, o.RadiusStretch)));
+        // Each object by the sphere its own broad phase reaches, with its own stretch: a cylinder's wider reach costs
+        // only the movers near it, not every query.
+        Partition = LandCellPartition.Build([.. _objects.Select(o => ((Vector3, float)?)o.LandblockReach), .. _cells.Select(c => c.Query.Bound)],
+            [.. _objects.Select(o => o.RadiusStretch), .. _cells.Select(_ => 1f)]);
         Exhaustive = new ExhaustiveWalk(_objects, _cells);
         _grids = [.. (gridRadii ?? []).Distinct().Select(r => SceneReachGrid.Build(_objects, _cells, _cellReach, r)).OfType<SceneReachGrid>()];
     }

@@ -139,9 +139,10 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
         var at = new Vector3(24f + 1.5f * 1.001f + 0.05f + 0.4f, 10f, 0f);
         var plain = LandCellPartition.Build(bounds);
         Assert.False(plain.Reaches(0, at, 1.5f));
-        var stretched = LandCellPartition.Build(bounds, BoundStretch.Cylinder);
+        var stretched = LandCellPartition.Build(bounds, [BoundStretch.Cylinder]);
         Assert.True(stretched.Reaches(0, at, 1.5f));
-        Assert.True(stretched.Reach(at, 1.5f, out var cells));
+        Assert.False(stretched.Reach(at, 1.5f, out _), "the plain range reaches no footprint");
+        Assert.True(stretched.Reach(at, 1.5f, out var cells, stretched: true));
         // The grid holds cell 0 alone (the only footprint), so the range is clamped to it.
         Assert.Equal(new LandCellPartition.CellRange(0, 0, 0, 0), cells);
         var asked = new Asked();
@@ -149,7 +150,65 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
         Assert.Equal(new[] { 0 }, asked.Entries);
         // 1.2 m further out, past the stretched pad (2.17 m) as well, cell 0 is not asked.
         Assert.False(stretched.Reaches(0, at + new Vector3(1.2f, 0f, 0f), 1.5f));
-        Assert.Throws<ArgumentOutOfRangeException>(() => LandCellPartition.Build(bounds, 0.5f));
+        Assert.Throws<ArgumentOutOfRangeException>(() => LandCellPartition.Build(bounds, [0.5f]));
+        Assert.Throws<ArgumentException>(() => LandCellPartition.Build(bounds, [1f, 1f]));
+    }
+
+    [Fact]
+    public void A_plain_entry_beside_a_stretched_one_is_asked_only_within_the_plain_range()
+    {
+        // Two bounds whose footprints end in cell 0, the first stretched (a cylinder's √2), the second plain (a
+        // sphere, or a part's reach a hair over 1). The mover 0.4 m into cell 1 beyond its plain range: the stretched
+        // entry is asked, the plain one is not, as it would be were every range padded by the scene's largest stretch.
+        (Vector3, float)?[] bounds = [(new Vector3(22.9f, 10f, 0f), 1f), (new Vector3(22.9f, 14f, 0f), 1f), (new Vector3(22.9f, 18f, 0f), 1f)];
+        var at = new Vector3(24f + 1.5f * 1.0001f * 1.001f + 0.05f + 0.4f, 12f, 0f);
+        var partition = LandCellPartition.Build(bounds, [BoundStretch.Cylinder, 1f, 1.0001f]);
+        Assert.Equal(1, partition.Stretched);
+        var asked = new Asked();
+        Assert.False(partition.Any(at, 1.5f, ref asked));
+        Assert.Equal(new[] { 0 }, asked.Entries);
+        Assert.Equal(1, asked.Visits);
+        Assert.True(partition.Reaches(0, at, 1.5f));
+        Assert.False(partition.Reaches(1, at, 1.5f));
+        Assert.False(partition.Reaches(2, at, 1.5f));
+        // 0.5 m nearer, within the plain range, all three are asked, in the cell's order.
+        asked = new Asked();
+        partition.Any(at - new Vector3(0.5f, 0f, 0f), 1.5f, ref asked);
+        Assert.Equal(new[] { 0, 1, 2 }, asked.Entries);
+        // A part's reach a hair over 1 is plain.
+        Assert.Equal(0, LandCellPartition.Build(bounds, [1f, 1f, 1.0001f]).Stretched);
+    }
+
+    [Fact]
+    public void An_object_turned_by_a_not_quite_unit_quaternion_is_registered_by_the_reach_its_broad_phase_tests()
+    {
+        // A half turn about z stored with |q|² = 1.0009 (Frame::IsValid keeps it): the matrix is s·R + (1 − s)·I, so a
+        // sphere 60 m out along the entity's x blocks centres 4(s − 1)·60 = 0.22 m further along landblock x than its
+        // bound moved into the landblock (plus the mover's r), more than the partition's pads (0.05 m and 0.1 % each
+        // side). Registered by its plain sphere, whose footprint ends in land cell 0, it is never asked by a mover
+        // whose range lies in cell 1; registered by its broad phase's reach, it is.
+        var turn = new Quaternion(0f, 0f, MathF.Sqrt(1.0009f), 0f);
+        var sphere = new Vector3(60f, 0f, 0f);
+        PlacedQuery Placed(Vector3 position) => new(0, 0x02000001u, position, turn, new SphereShapeQuery(sphere, 0.5f), sphere, 0.5f);
+        var probe = Placed(Vector3.Zero);
+        var offset = 24f - (0.5f * 1.001f + 0.05f) - 0.01f - probe.LandblockBound.Center.X;
+        var scene = new SceneQuery([Placed(new Vector3(offset, 100f, 10f))]);
+        var entry = scene.Objects[0];
+        Assert.True(LandCellPartition.Footprint(entry.LandblockBound.Center, entry.BoundRadius) is { X1: 0 });
+        // The furthest blocked centre along +x, 1 mm inside.
+        float inside = 0f, outside = 2f;
+        for (var i = 0; i < 40; i++)
+        {
+            var mid = (inside + outside) / 2;
+            if (entry.Overlaps(entry.LandblockBound.Center + new Vector3(mid, 0f, 0f), 0.5f)) inside = mid; else outside = mid;
+        }
+        var at = entry.LandblockBound.Center + new Vector3(inside - 1e-3f, 0f, 0f);
+        Assert.True(inside > 0.5f + 0.5f + 0.2f, $"blocked {inside} m out");
+        Assert.True(at.X - (0.5f * entry.RadiusStretch * 1.001f + 0.05f) > 24f, $"{at}: the mover's range is all in cell 1");
+        Assert.True(entry.Overlaps(at, 0.5f));
+        Assert.True(scene.Exhaustive.Overlaps(at, 0.5f));
+        Assert.True(scene.Overlaps(at, 0.5f));
+        Assert.True(scene.Partition.Reaches(0, at, 0.5f));
     }
 
     [Fact]
@@ -158,29 +217,48 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
         // Bounds of every size over and around a landblock; movers from a centimetre to beyond a cell (the
         // cell-by-cell fallback). The reference: every entry whose footprint meets the mover's cells, ordered by
         // the first cell (y then x) both share, then by entry.
-        var random = new Random(30);
-        var bounds = Enumerable.Range(0, 60)
-            .Select(_ => ((Vector3, float)?)(new Vector3(random.NextSingle() * 240f - 24f, random.NextSingle() * 240f - 24f, 0f), random.NextSingle() * random.NextSingle() * 40f))
-            .ToArray();
-        var partition = LandCellPartition.Build(bounds);
-        var footprints = bounds.Select(b => LandCellPartition.Footprint(b!.Value.Item1, b.Value.Item2)).ToArray();
-        for (var i = 0; i < 4000; i++)
+        // With and without stretched entries (a cylinder's √2, and a wider 2.5 whose range may be more than a cell
+        // wider): each found within its own range, plain and stretched in one order.
+        foreach (var stretchedToo in new[] { false, true })
         {
-            var at = new Vector3(random.NextSingle() * 300f - 54f, random.NextSingle() * 300f - 54f, 0f);
-            var r = i % 10 == 0 ? random.NextSingle() * 40f : random.NextSingle() * 3f;
-            var asked = new Asked();
-            partition.Any(at, r, ref asked);
-            int[] expected = partition.Reach(at, r, out var q)
-                ? [.. Enumerable.Range(0, bounds.Length)
-                    .Where(e => footprints[e] is { } f && f.Meets(q))
-                    .OrderBy(e => Math.Max(footprints[e]!.Value.Y0, q.Y0)).ThenBy(e => Math.Max(footprints[e]!.Value.X0, q.X0)).ThenBy(e => e)]
-                : [];
-            Assert.True(expected.SequenceEqual(asked.Entries), $"{at} r {r}");
-            Assert.Equal(expected.Length == 0 && !partition.Reach(at, r, out _) ? 0 : q.X1 - q.X0 < 3 && q.Y1 - q.Y0 < 3 ? 1 : q.Cells, asked.Visits);
+            var random = new Random(30);
+            var bounds = Enumerable.Range(0, 60)
+                .Select(_ => ((Vector3, float)?)(new Vector3(random.NextSingle() * 240f - 24f, random.NextSingle() * 240f - 24f, 0f), random.NextSingle() * random.NextSingle() * 40f))
+                .ToArray();
+            float[] stretches = [.. Enumerable.Range(0, bounds.Length).Select(e => !stretchedToo ? 1f : e % 7 == 0 ? BoundStretch.Cylinder : e % 13 == 0 ? 2.5f : e % 2 == 0 ? 1.0001f : 1f)];
+            var partition = LandCellPartition.Build(bounds, stretches);
+            Assert.Equal(stretches.Count(s => s > 1.01f), partition.Stretched);
+            var footprints = bounds.Select(b => LandCellPartition.Footprint(b!.Value.Item1, b.Value.Item2)).ToArray();
+            for (var i = 0; i < 4000; i++)
+            {
+                var at = new Vector3(random.NextSingle() * 300f - 54f, random.NextSingle() * 300f - 54f, 0f);
+                var r = i % 10 == 0 ? random.NextSingle() * 40f : random.NextSingle() * 3f;
+                var asked = new Asked();
+                partition.Any(at, r, ref asked);
+                var plainMet = partition.Reach(at, r, out var plain);
+                var wideMet = partition.Reach(at, r, out var wide, stretched: true);
+                // Each entry's own range: the stretched one past 1.01, the plain one otherwise.
+                (bool Met, LandCellPartition.CellRange Cells) RangeOf(int e) => stretches[e] > 1.01f ? (wideMet, wide) : (plainMet, plain);
+                int[] expected = [.. Enumerable.Range(0, bounds.Length)
+                    .Where(e => footprints[e] is { } f && RangeOf(e).Met && f.Meets(RangeOf(e).Cells))
+                    .OrderBy(e => Math.Max(footprints[e]!.Value.Y0, RangeOf(e).Cells.Y0)).ThenBy(e => Math.Max(footprints[e]!.Value.X0, RangeOf(e).Cells.X0)).ThenBy(e => e)];
+                Assert.True(expected.SequenceEqual(asked.Entries), $"{at} r {r}: expected {string.Join(",", expected)}, asked {string.Join(",", asked.Entries)}");
+                Assert.True(wideMet || !plainMet);
+                // One flat array while the plain range is 3 x 3 at most and the stretched one a cell wider at most; else
+                // each cell of the stretched range that is in the plain one or holds a stretched entry.
+                var flat = plainMet && plain.X1 - plain.X0 < 3 && plain.Y1 - plain.Y0 < 3
+                    && plain.X0 - wide.X0 <= 1 && plain.Y0 - wide.Y0 <= 1 && wide.X1 - plain.X1 <= 1 && wide.Y1 - plain.Y1 <= 1;
+                var cells = !wideMet ? 0 : Enumerable.Range(wide.Y0, wide.Y1 - wide.Y0 + 1)
+                    .SelectMany(y => Enumerable.Range(wide.X0, wide.X1 - wide.X0 + 1).Select(x => (x, y)))
+                    .Count(c => plainMet && plain.Holds(c.x, c.y)
+                        || Enumerable.Range(0, bounds.Length).Any(e => stretches[e] > 1.01f && footprints[e] is { } f && f.Holds(c.x, c.y)));
+                Assert.Equal(!wideMet ? 0 : flat ? 1 : cells, asked.Visits);
+            }
         }
     }
 
-    private struct Asked() : LandCellPartition.IEntryTest
+    /// <summary>Lists the entries a walk asks, in its order, and counts the candidate lists it loads.</summary>
+    internal struct Asked() : LandCellPartition.IEntryTest
     {
         public List<int> Entries { get; } = [];
         public int Visits { get; private set; }
