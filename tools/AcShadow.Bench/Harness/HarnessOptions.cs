@@ -71,7 +71,7 @@ public sealed record HarnessOptions(
             Int("--gfxobjs", ScaleSpecGenerator.GfxObjsFor(setups)),
             Int("--seed", ScaleSpecGenerator.DefaultSeed),
             Int("--reps", small ? 1 : 3),
-            Int("--startup-reps", small ? 2 : 10),
+            Int("--startup-reps", small ? 2 : 40),
             Path.GetFullPath(cli),
             Path.GetFullPath(cache),
             Path.GetFullPath(Value("--work") ?? Path.Combine(Path.GetTempPath(), $"acshadow-bench-{Environment.ProcessId}")),
