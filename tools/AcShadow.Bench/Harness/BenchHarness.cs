@@ -158,9 +158,7 @@ public static class BenchHarness
                 return outcome;
             }));
         extraRatios.AddRange(SceneChartTotals.Ratios(BusyLandblock, sceneRuns));
-        foreach (var t in sceneRuns)
-            log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"scene {BusyLandblock} per mover position: all-retail {t.RetailNs:0.0} ns ({t.RetailOps:0.0} counted operations), compiled {t.CompiledNs:0.0} ns ({t.CompiledOps:0.0}), exhaustive walk {t.ExhaustiveNs:0.0} ns ({t.ExhaustiveOps:0.0})"));
+        foreach (var t in sceneRuns) LogPerPosition(BusyLandblock, t);
         // The same on the built-in sample, as many runs.
         var sampleRuns = new List<SceneChartTotals>();
         for (var i = 0; i < options.Repetitions; i++)
@@ -174,11 +172,13 @@ public static class BenchHarness
             }
             var t = SceneChartTotals.Read(sceneCsv);
             sampleRuns.Add(t);
-            log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"scene {SampleLandblock} (sample) per mover position: all-retail {t.RetailNs:0.0} ns ({t.RetailOps:0.0} counted operations), compiled {t.CompiledNs:0.0} ns ({t.CompiledOps:0.0}), exhaustive walk {t.ExhaustiveNs:0.0} ns ({t.ExhaustiveOps:0.0})"));
+            LogPerPosition($"{SampleLandblock} (sample)", t);
         }
         if (sampleRuns.Count > 0) extraRatios.AddRange(SceneChartTotals.Ratios($"{SampleLandblock} (sample)", sampleRuns));
         Reset(landblockOut);
+
+        void LogPerPosition(string landblock, SceneChartTotals t) => log.WriteLine(string.Create(CultureInfo.InvariantCulture,
+            $"scene {landblock} per mover position: all-retail {t.RetailNs:0.0} ns ({t.RetailOps:0.0} counted operations), compiled {t.CompiledNs:0.0} ns ({t.CompiledOps:0.0}), exhaustive walk {t.ExhaustiveNs:0.0} ns ({t.ExhaustiveOps:0.0})"));
     }
 
     /// <summary>A landblock's batch with and without its indoor cells.</summary>
