@@ -197,8 +197,12 @@ internal sealed class SceneReachGrid
     /// <summary>The build: deterministic (no threads, fixed orders), so the same scene always gives the same grid.</summary>
     private sealed class Builder
     {
-        /// <summary>A program that would cost more than this is not stored: the entry's tree index answers faster.</summary>
-        private const long LongProgram = 16;
+        /// <summary>
+        /// A program that would cost more than this is not stored: the entry's tree index answers faster. Its voxels are
+        /// coarser and keep a node whole where the centre's side decides its children, so up to here the program is
+        /// the cheaper ask (docs/performance.md, 2026-12-03 sixth session: 16 → 32, about 5 % off the compiled scene).
+        /// </summary>
+        private const long LongProgram = 32;
 
         /// <summary>What asking an entry whole is counted at, for the split order: two turns and a short walk.</summary>
         private const long WholeCost = 8;
