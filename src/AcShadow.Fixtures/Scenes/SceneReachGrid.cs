@@ -76,9 +76,14 @@ internal sealed class SceneReachGrid
         (_codes, _frontiers, _programs) = (codes, frontiers, programs);
     }
 
-    /// <summary>The grid of a scene's entries for one mover radius, holding at most <paramref name="cellBudget"/> cell codes; null for an unusable radius.</summary>
-    public static SceneReachGrid? Build(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int cellBudget = 1 << 19) =>
-        SphereBounds.IsValidProbe(Vector3.Zero, radius) && radius > 0f ? new Builder(objects, cells, cellReach, radius, cellBudget).Run() : null;
+    /// <summary>
+    /// The grid of a scene's entries for one mover radius, holding at most <paramref name="cellBudget"/> cell codes, and
+    /// programs costing more than 16 only while its programs hold fewer than <paramref name="programBudget"/> ints (past
+    /// it such entries are asked whole); null for an unusable radius.
+    /// </summary>
+    public static SceneReachGrid? Build(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int cellBudget = 1 << 19,
+        int programBudget = 1 << 22) =>
+        SphereBounds.IsValidProbe(Vector3.Zero, radius) && radius > 0f ? new Builder(objects, cells, cellReach, radius, cellBudget, programBudget).Run() : null;
 
     /// <summary>Does a sphere of <see cref="Radius"/> at this (valid) landblock-relative centre touch any entry?</summary>
     public bool Overlaps(Vector3 center)
@@ -204,6 +209,13 @@ internal sealed class SceneReachGrid
         /// </summary>
         private const long LongProgram = 32;
 
+        /// <summary>
+        /// A program up to this cost is always stored (the bound before 2026-12-03's sixth session); a costlier one only
+        /// while the programs hold fewer ints than the build's program budget (16 MiB by default), so a denser scene than
+        /// any measured cannot grow the grid without bound through them.
+        /// </summary>
+        private const long ShortProgram = 16;
+
         /// <summary>What asking an entry whole is counted at, for the split order: two turns and a short walk.</summary>
         private const long WholeCost = 8;
 
@@ -212,6 +224,7 @@ internal sealed class SceneReachGrid
         private readonly CellReach[] _cellReach;
         private readonly float _radius;
         private readonly int _budget;
+        private readonly int _programBudget;
         private readonly Target?[] _targets;
         private readonly List<int> _always = [];
         private readonly List<int> _codes;
@@ -226,9 +239,9 @@ internal sealed class SceneReachGrid
         private double _fine, _pad;
         private int _topX, _topY, _topZ;
 
-        public Builder(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int budget)
+        public Builder(PlacedQuery[] objects, SceneCell[] cells, CellReach[] cellReach, float radius, int budget, int programBudget)
         {
-            (_objects, _cells, _cellReach, _radius, _budget) = (objects, cells, cellReach, radius, budget);
+            (_objects, _cells, _cellReach, _radius, _budget, _programBudget) = (objects, cells, cellReach, radius, budget, programBudget);
             _codes = new List<int>(Math.Min(budget, 1 << 16));
             var walks = new Dictionary<(BspSphereQuery, float), BspBoxWalk>();
             _targets = new Target?[objects.Length + cells.Length];
@@ -395,7 +408,8 @@ internal sealed class SceneReachGrid
                 // Blocked behind a broad phase: the program that blocks once it passes. A long program (a cell the budget
                 // left large) is not kept: the entry is asked whole there, through its tree's own voxel index.
                 var program = settled.Outcome == BspBoxWalk.Outcome.Blocked ? Program(BspBoxWalk.Blocks, settled.Guarded)
-                    : settled.Cost > LongProgram ? -1 : Program(target.Walk.LastFrontier, settled.Guarded);
+                    : settled.Cost > LongProgram || (settled.Cost > ShortProgram && _programs.Count >= _programBudget) ? -1
+                    : Program(target.Walk.LastFrontier, settled.Guarded);
                 var open = new Open(parent.Entry, gated, program, (gated ? 1 : 0) + 2 + settled.Cost);
                 _open.Add(open);
                 cost += open.Cost;

@@ -36,6 +36,28 @@ public sealed class SceneReachGridTests(SmallScaleFixture scale) : IClassFixture
     }
 
     [Fact]
+    public void A_program_budget_bounds_the_grid_and_keeps_its_answers()
+    {
+        Assert.True(LandblockIds.TryParse("0x0000", out var landblock));
+        var scene = BatchPlanner.Plan(new BatchSelection(false, false, null, landblock), scale.Files.Portal, scale.Files.Cell, []).Scene!;
+        var report = SceneCompiler.Compile(scene, new ChartSubjects(scale.Files.Portal), new SceneCompileOptions { Chart = new ChartOptions { Spacing = 1f } }, new FixedTimer());
+        var query = SceneCompiler.Query(report.Placed, report.Compiled, report.Cells, c => c.Chosen, partsApart: true);
+        var oracle = SceneCompiler.Query(report, c => c.Chosen).Exhaustive;
+        var full = SceneReachGrid.Build([.. query.Objects], [.. query.Cells], [.. query.CellReaches], 0.5f)!;
+        // No room for a program costing more than 16: those entries are asked whole, as before the longer bound.
+        var bounded = SceneReachGrid.Build([.. query.Objects], [.. query.Cells], [.. query.CellReaches], 0.5f, programBudget: 0)!;
+        Assert.True(bounded.Bytes < full.Bytes, $"bounded {bounded.Bytes} bytes, unbounded {full.Bytes}");
+        var blocked = 0;
+        foreach (var (at, _) in ScenePartitionTests.Positions(report))
+        {
+            var expected = oracle.Overlaps(at, 0.5f);
+            Assert.True(expected == full.Overlaps(at) && expected == bounded.Overlaps(at), $"{at}: exhaustive {expected}");
+            blocked += expected ? 1 : 0;
+        }
+        Assert.True(blocked > 0, "no position blocked");
+    }
+
+    [Fact]
     public void A_grid_query_allocates_nothing_and_settles_most_of_its_voxels()
     {
         var report = SceneCompileTests.Exact.Value;
