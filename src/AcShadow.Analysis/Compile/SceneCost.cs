@@ -17,7 +17,8 @@ namespace AcShadow.Analysis.Compile;
 /// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
 /// stopping at the first that blocks; given the compiled scene's grids, a tree asked through its
 /// voxel index counts as <see cref="QueryCost"/> counts an indexed tree. <see cref="SceneWalk.Exhaustive"/> counts the old walk
-/// instead: every object's bounding sphere, then every cell.
+/// instead: every object's bounding sphere, then every cell. The count is a hand-made mirror of the query's path, so
+/// each counted position is asked of the query too: a different answer means the mirror left the path, and it throws.
 /// </summary>
 internal static class SceneCost
 {
@@ -56,34 +57,40 @@ internal static class SceneCost
         var partition = query.Partition;
         CellReach[] cellReach = [.. query.CellReaches];
         var n = Math.Min(sample, positions.Count);
+        var asked = walk == SceneWalk.Exhaustive ? query.Exhaustive : query;
         long total = 0;
         for (var i = 0; i < n; i++)
         {
             var p = positions[(int)((long)i * positions.Count / n)];
-            total += walk == SceneWalk.Exhaustive ? CountAll(p.Center, p.Radius) : CountPartitioned(p.Center, p.Radius);
+            var (ops, blocked) = walk == SceneWalk.Exhaustive ? CountAll(p.Center, p.Radius) : CountPartitioned(p.Center, p.Radius);
+            // The counted walk mirrors the query's path by hand: where it reaches another answer, it took another path.
+            if (blocked != asked.Overlaps(p.Center, p.Radius))
+                throw new InvalidOperationException($"the counted {walk} walk answered {(blocked ? "blocked" : "clear")} at {p.Center} r {p.Radius} where the scene's query did not: SceneCost no longer follows the query's path");
+            total += ops;
         }
         return (double)total / n;
 
-        long CountPartitioned(Vector3 center, float radius)
+        (long Ops, bool Blocked) CountPartitioned(Vector3 center, float radius)
         {
-            if (!SphereBounds.IsValidProbe(center, radius)) return 0;
+            if (!SphereBounds.IsValidProbe(center, radius)) return (0, false);
             foreach (var grid in query.Grids)
                 if (grid.Radius == radius) return CountGrid(grid, center, radius);
             var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = LandCellReach };
-            partition.Any(center, radius, ref counting);
-            return counting.Ops;
+            var blocked = partition.Any(center, radius, ref counting);
+            return (counting.Ops, blocked);
         }
 
         // The whole-scene grid's path: the voxel lookup 1, then each open entry's broad phases (its object's sphere and
         // its own bound) when the voxel leaves them open, the turns (the object's once per object, then the part's or
         // the cell's) and its tree's frontier as the walk counts it; an entry asked whole counts its model (or the
         // cell's tree) from the turn on, as the grid asks it.
-        long CountGrid(SceneReachGrid grid, Vector3 center, float radius)
+        (long Ops, bool Blocked) CountGrid(SceneReachGrid grid, Vector3 center, float radius)
         {
             var counting = new Counting(objects, cellCounters, cellReach, center, radius) { Ops = GridLookup };
             foreach (var e in grid.Always)
-                if (counting.Test(e)) return counting.Ops;
-            var (_, _, items) = grid.At(center);
+                if (counting.Test(e)) return (counting.Ops, true);
+            var (_, voxelBlocked, items) = grid.At(center);
+            if (voxelBlocked) return (counting.Ops, true);
             object? frame = null;
             foreach (var (entry, gated, program, guarded) in items)
             {
@@ -105,7 +112,7 @@ internal static class SceneCost
                         var cell = query.Cells[c].Query;
                         counting.Ops += QueryCost.Transform + QueryCost.Frontier(cell.Tree.Bsp, program, guarded, cell.ToCell(center), radius, out cellBlocked);
                     }
-                    if (cellBlocked) break;
+                    if (cellBlocked) return (counting.Ops, true);
                     continue;
                 }
                 var (placed, model) = objects[entry];
@@ -127,17 +134,18 @@ internal static class SceneCost
                     var (partLocal, partRadius) = posed.Pose.ToLocal(local, r);
                     counting.Ops += QueryCost.Transform + QueryCost.Frontier(PosedTree(posed).Bsp, program, guarded, partLocal, partRadius, out blocked);
                 }
-                if (blocked) break;
+                if (blocked) return (counting.Ops, true);
             }
-            return counting.Ops;
+            return (counting.Ops, false);
         }
 
-        long CountAll(Vector3 center, float radius)
+        (long Ops, bool Blocked) CountAll(Vector3 center, float radius)
         {
+            if (!SphereBounds.IsValidProbe(center, radius)) return (0, false);
             var counting = new Counting(objects, cellCounters, null, center, radius);
             for (var e = 0; e < objects.Length + cellCounters.Length; e++)
-                if (counting.Test(e)) break;
-            return counting.Ops;
+                if (counting.Test(e)) return (counting.Ops, true);
+            return (counting.Ops, false);
         }
     }
 
