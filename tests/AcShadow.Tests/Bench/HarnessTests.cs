@@ -39,6 +39,14 @@ public sealed class HarnessTests
         foreach (var size in new[] { "full", "quarter", BenchReport.ScalingSize })
             Assert.True(root.GetProperty("dats").GetProperty(size).GetProperty("portalBytes").GetInt64() > 0);
         Assert.True(root.GetProperty("machine").GetProperty("loadAverageAtEnd").GetDouble() >= 0);
+        // Each core's speed at the start and the end, one pinned loop each (Linux: sched_setaffinity).
+        foreach (var when in new[] { "coreLoopMsAtStart", "coreLoopMsAtEnd" })
+        {
+            var loops = root.GetProperty("machine").GetProperty(when).EnumerateArray().Select(e => e.GetDouble()).ToArray();
+            if (OperatingSystem.IsLinux()) Assert.Equal(Math.Min(Environment.ProcessorCount, 64), loops.Length);
+            Assert.All(loops, ms => Assert.True(ms > 0, $"{when}: {ms} ms"));
+        }
+        Assert.Contains("Core speeds (one fixed loop pinned to each core, ms)", log.ToString());
 
         var timings = root.GetProperty("timings").EnumerateArray().ToArray();
         foreach (var name in Measured)

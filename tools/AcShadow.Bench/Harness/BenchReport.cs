@@ -20,6 +20,7 @@ public sealed record BenchReport(
     CachedDat Quarter,
     CachedDat Scaling,
     double LoadAverageAtEnd,
+    IReadOnlyList<double> CoreLoopMsAtEnd,
     IReadOnlyList<Timing> Timings,
     CollisionResult Collision,
     IReadOnlyList<Check> Checks,
@@ -94,7 +95,7 @@ public sealed record BenchReport(
             Add(() => new("dump / --version, installed tool", Get(InstalledDump, "full", 1).Median / installedVersion.Median, "<=", 1.3,
                 $"dump --setup over --version, both run as the command `dotnet tool install` put on the PATH ({options.InstalledCli})"));
         ratios.AddRange(measured ?? []);
-        return new BenchReport(options, machine, started, finished, full, quarter, scaling, loadAtEnd, timings, collision, checks, ratios);
+        return new BenchReport(options, machine, started, finished, full, quarter, scaling, loadAtEnd, CoreSpeed.Measure(), timings, collision, checks, ratios);
     }
 
     public void Write(string path)
@@ -114,6 +115,8 @@ public sealed record BenchReport(
             w.WriteString("dotnet", Machine.Dotnet);
             w.WriteNumber("loadAverageAtStart", Machine.LoadAverage);
             w.WriteNumber("loadAverageAtEnd", LoadAverageAtEnd);
+            WriteNumbers(w, "coreLoopMsAtStart", Machine.CoreLoopMs);
+            WriteNumbers(w, "coreLoopMsAtEnd", CoreLoopMsAtEnd);
             w.WriteEndObject();
             w.WriteStartObject("parameters");
             w.WriteBoolean("small", Options.Small);
@@ -204,11 +207,20 @@ public sealed record BenchReport(
         File.WriteAllBytes(path, [.. stream.ToArray(), (byte)'\n']);
     }
 
+    private static void WriteNumbers(Utf8JsonWriter w, string name, IReadOnlyList<double> values)
+    {
+        w.WriteStartArray(name);
+        foreach (var v in values) w.WriteNumberValue(v);
+        w.WriteEndArray();
+    }
+
     /// <summary>The table docs/performance.md shows (Markdown, so it pastes as is).</summary>
     public void PrintTable(TextWriter o)
     {
         o.WriteLine(Invariant($"Scale dat: {Full.Setups} Setups, {Full.GfxObjs} GfxObjs, {Full.PortalBytes / 1048576.0:0} MiB (forged in {Full.GenerationSeconds:0.0} s); quarter: {Quarter.Setups} Setups, {Quarter.GfxObjs} GfxObjs, {Quarter.PortalBytes / 1048576.0:0} MiB; scaling: {Scaling.Setups} Setups, {Scaling.GfxObjs} GfxObjs, seed {Scaling.Seed}, {Scaling.PortalBytes / 1048576.0:0} MiB."));
         o.WriteLine(Invariant($"Conditions: {Machine.Cores} cores, {Machine.Cpu}, {Machine.RamGiB:0} GiB RAM, {Machine.Os}, {Machine.Dotnet}; load average {Machine.LoadAverage:0.00} at the start and {LoadAverageAtEnd:0.00} at the end ({Started:yyyy-MM-dd HH:mm}-{Finished:HH:mm} UTC). Each figure: median of {Options.Repetitions} run(s) after a warm-up. Workloads: {string.Join(", ", HarnessOptions.Groups.Where(Options.Runs))}."));
+        if (Machine.CoreLoopMs.Count > 0)
+            o.WriteLine(Invariant($"Core speeds (one fixed loop pinned to each core, ms): {string.Join(" / ", Machine.CoreLoopMs)} at the start, {string.Join(" / ", CoreLoopMsAtEnd)} at the end; a core slower than its neighbour is shared with another tenant, and slows what runs on it."));
         o.WriteLine();
         o.WriteLine("| What | Dat | Jobs | Output | Median s | Min s | Max s | CPU s | Peak MiB |");
         o.WriteLine("|---|---|---|---|---|---|---|---|---|");

@@ -3,7 +3,8 @@ using System.Runtime.InteropServices;
 namespace AcShadow.Bench.Harness;
 
 /// <summary>The machine a run was measured on, as docs/performance.md reports it.</summary>
-public sealed record MachineInfo(int Cores, string Cpu, double RamGiB, string Os, string Dotnet, double LoadAverage)
+/// <param name="CoreLoopMs">Each core's time for one fixed loop at the start (<see cref="CoreSpeed"/>): a shared VM's cores can differ by half.</param>
+public sealed record MachineInfo(int Cores, string Cpu, double RamGiB, string Os, string Dotnet, double LoadAverage, IReadOnlyList<double> CoreLoopMs)
 {
     public static MachineInfo Current() => new(
         Environment.ProcessorCount,
@@ -11,7 +12,8 @@ public sealed record MachineInfo(int Cores, string Cpu, double RamGiB, string Os
         (ProcLine("/proc/meminfo", "MemTotal") is { } kb ? double.Parse(kb.Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture) : 0) / 1048576.0,
         RuntimeInformation.OSDescription,
         RuntimeInformation.FrameworkDescription,
-        CurrentLoadAverage());
+        CurrentLoadAverage(),
+        CoreSpeed.Measure());
 
     /// <summary>The 1-minute load average: a busy machine makes every figure noisier.</summary>
     public static double CurrentLoadAverage()
