@@ -206,8 +206,8 @@ internal sealed class SceneReachGrid
         /// A program that would cost more than this is not stored: the entry is asked whole, through its tree's own index.
         /// That index's voxels are coarser and keep a node whole where the centre's side decides its children, so up to
         /// here the program is the cheaper ask (16 → 32: about 5 % off the compiled scene on the scale dat's 0x0000); past
-        /// it, storing more cost memory for no measured gain (64: the same time, a 45.7 MB grid against 17.6;
-        /// docs/performance.md, 2026-12-03 sixth session).
+        /// it, storing more cost memory for no measured gain (64: 0.95 of 16's time, 32: 0.93-0.95, each measured against
+        /// 16; a 45.7 MB grid against 17.6; docs/performance.md, 2026-12-03 sixth session).
         /// </summary>
         private const long LongProgram = 32;
 
