@@ -2,7 +2,7 @@ using AcShadow.Bench.Harness;
 using BenchmarkDotNet.Running;
 
 // dotnet run -c Release --project tools/AcShadow.Bench -- harness --cli PATH [--small]   (scripts/bench.sh)
-// dotnet run -c Release --project tools/AcShadow.Bench -- alloc --dat DIR [--jobs N]            (what batch --all allocates)
+// dotnet run -c Release --project tools/AcShadow.Bench -- alloc --dat DIR [--jobs N] [--by-type]  (what batch --all allocates)
 // dotnet run -c Release --project tools/AcShadow.Bench -- --filter '*'                   (BenchmarkDotNet)
 switch (args.FirstOrDefault())
 {

@@ -29,6 +29,9 @@ namespace AcShadow.Cli.Commands;
 /// </summary>
 public static class ChartCommand
 {
+    /// <summary>Decoded objects the dat keeps beneath the subjects' own cache.</summary>
+    private const int WorkingSet = 256;
+
     public static Command Create(CliConsole console)
     {
         var setup = CommonOptions.SetupIds("a Setup id to chart, e.g. 0x020019FF (repeat for more)");
@@ -114,7 +117,7 @@ public static class ChartCommand
 
         // The subjects keep their own GfxObj cache; beneath it the dat keeps a bounded working set, so a chart
         // of the whole dat does not hold every object it decoded.
-        var subjects = new ChartSubjects(dat.PortalWorkingSet(), pose);
+        var subjects = new ChartSubjects(dat.PortalWorkingSet(WorkingSet), pose);
         // Like batch, a selected object that cannot be decoded is skipped with its reason; an id asked
         // for by --setup has been read above, so it is decodable. The first few are warned about as they
         // come; the summary counts them all.

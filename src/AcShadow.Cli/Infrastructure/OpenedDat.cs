@@ -41,15 +41,12 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
     /// </summary>
     public static DatSourceInfo Hashed(DatDatabase dat) => dat.Info with { Sha256 = dat.Archive.ContentSha256() };
 
-    /// <summary>Decoded objects a run over many objects keeps (<see cref="PortalWorkingSet"/>).</summary>
-    public const int WorkingSetObjects = 256;
-
     /// <summary>
-    /// A second view over the portal archive that keeps at most <see cref="WorkingSetObjects"/> decoded objects
+    /// A second view over the portal archive that keeps at most <paramref name="objects"/> decoded objects
     /// (oldest dropped first), for a run over many objects: <see cref="Portal"/> keeps every object it decodes.
     /// This dat still owns and disposes the archive.
     /// </summary>
-    public DatDatabase PortalWorkingSet() => new(Portal.Archive, WorkingSetObjects);
+    public DatDatabase PortalWorkingSet(int objects) => new(Portal.Archive, objects);
 
     public void Dispose()
     {

@@ -47,7 +47,8 @@ internal static class PolygonPlane
     public static float MaxDeviation(Plane plane, IReadOnlyList<Vector3> vertices)
     {
         var max = 0f;
-        foreach (var v in vertices) max = MathF.Max(max, MathF.Abs(Distance(plane, v)));
+        // By index: a foreach over the interface boxes the list's enumerator, once per polygon of every dump.
+        for (var i = 0; i < vertices.Count; i++) max = MathF.Max(max, MathF.Abs(Distance(plane, vertices[i])));
         return max;
     }
 }
