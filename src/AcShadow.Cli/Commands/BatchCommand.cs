@@ -145,7 +145,7 @@ public static class BatchCommand
             result = BatchRunner.Stream(source, options, plan, inputs, jobs, f => Write(f.RelativePath, f.Content), reuse, p =>
             {
                 progress.Report(p);
-                dat.RequireUnchanged();
+                dat.RequireUnchangedNowAndThen();
             }, console.Interrupted);
             result = result with { Inputs = result.Inputs with { Dat = portalHash.GetAwaiter().GetResult() } };
             dat.RequireUnchanged();
