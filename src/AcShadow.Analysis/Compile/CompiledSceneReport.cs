@@ -29,7 +29,8 @@ internal sealed record CompiledSceneReport(
 /// retail in both) — how many positions, how many agree, the time per mover position of each, and the
 /// counted operations per position of each (<see cref="SceneCost"/>: the same on every run). Both ask
 /// through the land-cell partition; <see cref="Exhaustive"/> and <see cref="ExhaustiveOps"/> are all-retail
-/// asked of every object and cell, the walk the partition replaced.
+/// asked of every object and cell, the walk the partition replaced; <see cref="NarrowFloorOps"/> what no broad phase
+/// can save.
 /// </summary>
 internal sealed record SceneTotals(int Positions, int Agree, int FalsePass, int FalseBlock, TimingStats Retail, TimingStats Compiled, int RetailShapes, int CompiledShapes)
 {
@@ -37,6 +38,9 @@ internal sealed record SceneTotals(int Positions, int Agree, int FalsePass, int 
     public double CompiledOps { get; init; }
     public TimingStats Exhaustive { get; init; } = TimingStats.Of([]);
     public double ExhaustiveOps { get; init; }
+
+    /// <summary>All-retail's narrow phase alone (<see cref="SceneWalk.NarrowFloor"/>): no broad phase asks for less.</summary>
+    public double NarrowFloorOps { get; init; }
 
     public double AgreementPercent => Positions == 0 ? 100.0 : 100.0 * Agree / Positions;
 }

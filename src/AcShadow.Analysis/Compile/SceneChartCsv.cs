@@ -9,6 +9,7 @@ namespace AcShadow.Analysis.Compile;
 /// scene-chart.csv: first the landblock as a whole, once with every object as retail and once compiled
 /// (positions asked, agreement with all-retail, median time and counted operations per mover position),
 /// both through the land-cell partition, then all-retail asked of every object and cell (the old walk),
+/// then the narrow-phase floor (counted operations only: what no broad phase in front of all-retail can save),
 /// then one row per placed object (its chosen model, its probes and disagreements, time and counted
 /// operations per query of the chosen model and of retail),
 /// then one per indoor cell (always retail: its probes are where the scene was checked around it).
@@ -21,6 +22,9 @@ internal static class SceneChartCsv
     /// <summary>The model column of the exhaustive walk's row: all-retail, every object and cell asked at every position.</summary>
     public const string ExhaustiveModel = "all-retail-exhaustive";
 
+    /// <summary>The model column of the narrow-phase floor's row (<see cref="SceneWalk.NarrowFloor"/>): counted, never timed.</summary>
+    public const string NarrowFloorModel = "all-retail-narrow-floor";
+
     public static string Write(CompiledSceneReport report)
     {
         var t = report.Totals;
@@ -29,6 +33,7 @@ internal static class SceneChartCsv
         Row(csv, "landblock", "", "", "compiled", t.CompiledShapes, t.Positions, t.Agree, t.AgreementPercent, t.FalsePass, t.FalseBlock, t.Compiled.MedianNs, t.Compiled.P10Ns, t.Compiled.P90Ns, t.Retail.MedianNs, t.CompiledOps, t.RetailOps);
         // The walk the land-cell partition replaced: the same answers, every object and cell asked.
         Row(csv, "landblock", "", "", ExhaustiveModel, t.RetailShapes, t.Positions, t.Positions, 100, 0, 0, t.Exhaustive.MedianNs, t.Exhaustive.P10Ns, t.Exhaustive.P90Ns, t.Retail.MedianNs, t.ExhaustiveOps, t.RetailOps);
+        Row(csv, "landblock", "", "", NarrowFloorModel, t.RetailShapes, t.Positions, t.Positions, 100, 0, 0, double.NaN, double.NaN, double.NaN, t.Retail.MedianNs, t.NarrowFloorOps, t.RetailOps);
         foreach (var placed in report.Placed.Select(p => p.Object))
         {
             var c = report.For(placed);

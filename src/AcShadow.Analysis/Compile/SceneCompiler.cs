@@ -195,6 +195,7 @@ internal static class SceneCompiler
         var retailOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, built: retail);
         var compiledOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Chosen, positions, options.Chart.TimingProbes, partsApart: true, grids: grids, built: chosen);
         var exhaustiveOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.Exhaustive, built: retail);
+        var floorOps = SceneCost.PerPosition(placed, compiled, cells, c => c.Retail, positions, options.Chart.TimingProbes, SceneWalk.NarrowFloor, built: retail);
         var retailModel = new PreparedModel(retail, [], []);
         var compiledModel = new PreparedModel(chosen, [], []);
         var exhaustiveModel = new PreparedModel(retail.Exhaustive, [], []);
@@ -217,6 +218,7 @@ internal static class SceneCompiler
             CompiledOps = compiledOps,
             Exhaustive = exhaustiveTiming,
             ExhaustiveOps = exhaustiveOps,
+            NarrowFloorOps = floorOps,
         };
     }
 

@@ -17,7 +17,8 @@ namespace AcShadow.Analysis.Compile;
 /// landblock 1 (<see cref="CellReach"/>) and, for a position inside it, the cell's turn and its tree's count;
 /// stopping at the first that blocks; given the compiled scene's grids, a tree asked through its
 /// voxel index counts as <see cref="QueryCost"/> counts an indexed tree. <see cref="SceneWalk.Exhaustive"/> counts the old walk
-/// instead: every object's bounding sphere, then every cell. The count is a hand-made mirror of the query's path, so
+/// instead: every object's bounding sphere, then every cell; <see cref="SceneWalk.NarrowFloor"/> the narrow phase alone, the
+/// floor no broad phase can go under. The count is a hand-made mirror of the query's path, so
 /// each counted position is asked of the query too: a different answer means the mirror left the path, and it throws.
 /// </summary>
 internal static class SceneCost
@@ -57,12 +58,17 @@ internal static class SceneCost
         var partition = query.Partition;
         CellReach[] cellReach = [.. query.CellReaches];
         var n = Math.Min(sample, positions.Count);
-        var asked = walk == SceneWalk.Exhaustive ? query.Exhaustive : query;
+        var asked = walk == SceneWalk.Partitioned ? query : query.Exhaustive;
         long total = 0;
         for (var i = 0; i < n; i++)
         {
             var p = positions[(int)((long)i * positions.Count / n)];
-            var (ops, blocked) = walk == SceneWalk.Exhaustive ? CountAll(p.Center, p.Radius) : CountPartitioned(p.Center, p.Radius);
+            var (ops, blocked) = walk switch
+            {
+                SceneWalk.Exhaustive => CountAll(p.Center, p.Radius),
+                SceneWalk.NarrowFloor => CountNarrowFloor(p.Center, p.Radius),
+                _ => CountPartitioned(p.Center, p.Radius),
+            };
             // The counted walk mirrors the query's path by hand: where it reaches another answer, it took another path.
             if (blocked != asked.Overlaps(p.Center, p.Radius))
                 throw new InvalidOperationException($"the counted {walk} walk answered {(blocked ? "blocked" : "clear")} at {p.Center} r {p.Radius} where the scene's query did not: SceneCost no longer follows the query's path");
@@ -137,6 +143,37 @@ internal static class SceneCost
                 if (blocked) return (counting.Ops, true);
             }
             return (counting.Ops, false);
+        }
+
+        // Every entry's narrow phase where the sphere is within its own bound (the bound test itself free): a clear position
+        // pays them all, a blocked one only its cheapest blocker, whatever order a walk might find it in.
+        (long Ops, bool Blocked) CountNarrowFloor(Vector3 center, float radius)
+        {
+            if (!SphereBounds.IsValidProbe(center, radius)) return (0, false);
+            long all = 0, cheapestBlocker = long.MaxValue;
+            for (var e = 0; e < objects.Length + cellCounters.Length; e++)
+            {
+                long ops;
+                bool blocked;
+                if (e >= objects.Length)
+                {
+                    var c = e - objects.Length;
+                    if (!cellReach[c].Reaches(center, radius)) continue;
+                    var (cellFrame, counter) = cellCounters[c];
+                    var (cellLocal, cellRadius) = cellFrame.ToLocal(center, radius);
+                    ops = counter.Count(cellLocal, cellRadius, out blocked);
+                }
+                else
+                {
+                    var (o, model) = objects[e];
+                    if (!o.Near(center, radius)) continue;
+                    var (local, r) = o.Frame.ToLocal(center, radius);
+                    ops = QueryCost.Transform + model.Count(local, r, out blocked);
+                }
+                all += ops;
+                if (blocked) cheapestBlocker = Math.Min(cheapestBlocker, ops);
+            }
+            return cheapestBlocker == long.MaxValue ? (all, false) : (cheapestBlocker, true);
         }
 
         (long Ops, bool Blocked) CountAll(Vector3 center, float radius)

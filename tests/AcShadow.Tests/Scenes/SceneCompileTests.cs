@@ -180,6 +180,10 @@ public class SceneCompileTests
         Assert.Equal(SceneChartCsv.Header, csv[0]);
         Assert.StartsWith("landblock,,,all-retail,", csv[1]);
         Assert.StartsWith("landblock,,,compiled,", csv[2]);
+        Assert.StartsWith("landblock,,,all-retail-exhaustive,", csv[3]);
+        // Counted only: no time columns.
+        Assert.StartsWith("landblock,,,all-retail-narrow-floor,", csv[4]);
+        Assert.Contains(",,,,", csv[4]);
         // The four outdoor objects, the Setup inside the cottage, and the cottage's two cells.
         Assert.Equal(5, csv.Count(l => l.StartsWith("object,")));
         Assert.Equal(2, csv.Count(l => l.StartsWith("cell,") && l.Contains(",retail,")));

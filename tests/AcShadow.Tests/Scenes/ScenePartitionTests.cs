@@ -34,6 +34,7 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
         var retail = SceneCompiler.Query(report, c => c.Retail);
         Assert.Equal(0, retail.Partition.Everywhere);
         Assert.True(report.Totals.RetailOps < report.Totals.ExhaustiveOps, $"{report.Totals.RetailOps} vs {report.Totals.ExhaustiveOps}");
+        AssertAboveTheNarrowFloor(report.Totals);
     }
 
     [Fact]
@@ -69,6 +70,18 @@ public sealed class ScenePartitionTests(SmallScaleFixture scale) : IClassFixture
         Assert.True(edges > 1_000, $"{edges} edge positions");
         // Counted along the walks: the partition asks less than the exhaustive walk.
         Assert.True(report.Totals.RetailOps < report.Totals.ExhaustiveOps, $"{report.Totals.RetailOps} vs {report.Totals.ExhaustiveOps}");
+        AssertAboveTheNarrowFloor(report.Totals);
+    }
+
+    /// <summary>
+    /// The narrow-phase floor is what any broad phase must still ask: a clear position's every entry it is within, a
+    /// blocked one's cheapest blocker. No walk counts less; the partition pays something for finding its entries.
+    /// </summary>
+    private static void AssertAboveTheNarrowFloor(SceneTotals totals)
+    {
+        Assert.True(totals.NarrowFloorOps > 0, $"floor {totals.NarrowFloorOps}");
+        Assert.True(totals.NarrowFloorOps < totals.RetailOps, $"floor {totals.NarrowFloorOps} vs partitioned {totals.RetailOps}");
+        Assert.True(totals.NarrowFloorOps < totals.ExhaustiveOps, $"floor {totals.NarrowFloorOps} vs exhaustive {totals.ExhaustiveOps}");
     }
 
     [Fact]

@@ -178,7 +178,7 @@ public static class BenchHarness
         Reset(landblockOut);
 
         void LogPerPosition(string landblock, SceneChartTotals t) => log.WriteLine(string.Create(CultureInfo.InvariantCulture,
-            $"scene {landblock} per mover position: all-retail {t.RetailNs:0.0} ns ({t.RetailOps:0.0} counted operations), compiled {t.CompiledNs:0.0} ns ({t.CompiledOps:0.0}), exhaustive walk {t.ExhaustiveNs:0.0} ns ({t.ExhaustiveOps:0.0})"));
+            $"scene {landblock} per mover position: all-retail {t.RetailNs:0.0} ns ({t.RetailOps:0.0} counted operations), compiled {t.CompiledNs:0.0} ns ({t.CompiledOps:0.0}), exhaustive walk {t.ExhaustiveNs:0.0} ns ({t.ExhaustiveOps:0.0}), narrow-phase floor ({t.NarrowFloorOps:0.0})"));
     }
 
     /// <summary>A landblock's batch with and without its indoor cells.</summary>
