@@ -31,7 +31,7 @@ public static class BatchCommand
     /// Decoded objects the dat keeps for each job: a Setup's parts are read for its shapes and again for their
     /// BSP dumps, so a few Setups' worth. More only keeps objects alive long enough to be copied through the
     /// collector's generations: on the 3,000-Setup scale dat, 256 in all (the old size) took 1.77 s at one job and
-    /// 1.31 s at two, 16 a job 1.38 and 0.94 s, and 25 % less memory (docs/performance.md, issue 30).
+    /// 1.31 s at two, 16 a job 1.38 and 0.94 s, with a quarter less memory (docs/performance.md, issue 30).
     /// </summary>
     public const int WorkingSetPerJob = 16;
 
