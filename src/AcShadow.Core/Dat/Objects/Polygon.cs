@@ -5,7 +5,9 @@ namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
 /// A GfxObj polygon: vertex ids into the GfxObj's vertex array. UV index lists are present unless the
-/// stippling says NoPos / NoNeg (negative UVs only for Clockwise polygons).
+/// stippling says NoPos / NoNeg (negative UVs only for Clockwise polygons). They are drawing only: reading steps
+/// over them, as it steps over the vertices' normals and UVs, so a polygon read from a dat has none (a byte array
+/// each was a tenth of what a batch decoded); writing emits what it is given, zeros where it has none.
 /// </summary>
 public sealed record Polygon(
     Stippling Stippling,
@@ -25,10 +27,9 @@ public sealed record Polygon(
         var neg = r.ReadInt16();
         var ids = new short[count];
         for (var i = 0; i < count; i++) ids[i] = r.ReadInt16();
-        byte[] posUv = [], negUv = [];
-        if (!stippling.HasFlag(Stippling.NoPos)) posUv = r.ReadBytes(count);
-        if (!stippling.HasFlag(Stippling.NoNeg) && sides == SidesType.Clockwise) negUv = r.ReadBytes(count);
-        return new Polygon(stippling, sides, pos, neg, ids, posUv, negUv);
+        if (!stippling.HasFlag(Stippling.NoPos)) r.Skip(count);
+        if (!stippling.HasFlag(Stippling.NoNeg) && sides == SidesType.Clockwise) r.Skip(count);
+        return new Polygon(stippling, sides, pos, neg, ids, [], []);
     }
 
     public void Write(DatBinaryWriter w)

@@ -9,21 +9,36 @@ namespace AcShadow.Core.Dat.Objects;
 /// </summary>
 internal static class VertexArrayLayout
 {
-    internal static Dictionary<ushort, Vector3> Read(DatBinaryReader r)
+    /// <summary>
+    /// The origins by id: a <see cref="VertexTable"/> while the ids run 0, 1, 2, ... (every vertex array the client's
+    /// exporter wrote), a hash table from the first id that does not (a later duplicate id wins, as in the hash table).
+    /// </summary>
+    internal static IReadOnlyDictionary<ushort, Vector3> Read(DatBinaryReader r)
     {
         var vertexType = r.ReadInt32();
         if (vertexType != 1) throw new DatFormatException($"vertex type {vertexType} is not the SW vertex type (1)");
         var count = r.ReadCount(r.ReadUInt32(), 28, "vertex");
-        var vertices = new Dictionary<ushort, Vector3>(count);
+        var origins = new Vector3[count];
+        Dictionary<ushort, Vector3>? byId = null;
         for (var i = 0; i < count; i++)
         {
             var key = r.ReadUInt16();
             var uvCount = r.ReadUInt16();
             var origin = r.ReadVector3();
             r.Skip(12 + uvCount * 8); // normal and UVs: drawing only
-            vertices[key] = origin;
+            if (byId is null && key == i)
+            {
+                origins[i] = origin;
+                continue;
+            }
+            if (byId is null)
+            {
+                byId = new Dictionary<ushort, Vector3>(count);
+                for (var k = 0; k < i; k++) byId[(ushort)k] = origins[k];
+            }
+            byId[key] = origin;
         }
-        return vertices;
+        return byId is null ? new VertexTable(origins) : byId;
     }
 
     /// <summary>Origins in id order, each with no UVs and a zero normal: what collision reads, nothing more.</summary>
