@@ -37,9 +37,9 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
 
     /// <summary>
     /// <see cref="RequireUnchanged"/> at most once per <see cref="ChangeCheckInterval"/>, for a run that asks after
-    /// every object. Each look is several calls into the kernel for each file, and the process's jobs queue on the
-    /// kernel's locks for them (the working directory's, the file's): after every Setup of a batch they were 15,000
-    /// calls on the 3,000-Setup scale dat (docs/performance.md). The run's end still looks once more, unthrottled.
+    /// every object. Each look is several calls into the kernel for each file: after every Setup of a batch they were
+    /// about 30,000 calls on the 3,000-Setup scale dat, each taking 2-3 times as long with two jobs as with one
+    /// (docs/performance.md). The run's end still looks once more, unthrottled.
     /// </summary>
     public void RequireUnchangedNowAndThen()
     {

@@ -10,8 +10,9 @@ namespace AcShadow.Core.Dat.Objects;
 internal static class VertexArrayLayout
 {
     /// <summary>
-    /// The origins by id: a <see cref="VertexTable"/> while the ids run 0, 1, 2, ... (every vertex array the client's
-    /// exporter wrote), a hash table from the first id that does not (a later duplicate id wins, as in the hash table).
+    /// The origins by id: a <see cref="VertexTable"/> when the stored ids count up from 0 (the forge's arrays, and
+    /// the cheap case), else a hash table from the first id that does not (in stored order; a repeated id keeps its
+    /// first place and its last origin).
     /// </summary>
     internal static IReadOnlyDictionary<ushort, Vector3> Read(DatBinaryReader r)
     {

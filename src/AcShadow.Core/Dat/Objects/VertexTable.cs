@@ -4,10 +4,9 @@ using System.Numerics;
 namespace AcShadow.Core.Dat.Objects;
 
 /// <summary>
-/// A vertex array's origins by id, when the ids are 0, 1, 2, ... in order (as a vertex array stores them: the
-/// id is the index): the origins alone, 12 bytes a vertex, an id looked up by indexing. A hash table of the same
-/// vertices took 28 bytes a vertex, and a batch decodes millions of them. Enumerates in id order, as the table
-/// it stands in for did for such ids.
+/// A vertex array's origins by id, when the stored ids count up from 0 (vertex i has id i): the origins alone,
+/// 12 bytes a vertex, an id looked up by indexing. A hash table of the same vertices took 28 bytes a vertex, and a
+/// batch decodes millions of them. Enumerates in id order, as the hash table did for such ids.
 /// </summary>
 internal sealed class VertexTable(Vector3[] origins) : IReadOnlyDictionary<ushort, Vector3>
 {
