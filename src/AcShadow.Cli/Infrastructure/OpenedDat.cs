@@ -39,7 +39,7 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
     /// <see cref="RequireUnchanged"/> at most once per <see cref="ChangeCheckInterval"/>, for a run that asks after
     /// every object. Each look is several calls into the kernel for each file: after every Setup of a batch they were
     /// about 30,000 calls on the 3,000-Setup scale dat, each taking 2-3 times as long with two jobs as with one
-    /// (docs/performance.md). The run's end still looks once more, unthrottled.
+    /// under strace (docs/performance.md). The run's end still looks once more, unthrottled.
     /// </summary>
     public void RequireUnchangedNowAndThen()
     {
