@@ -17,12 +17,22 @@ public static class AtomicFile
     /// <summary>The temporary name a write of <paramref name="target"/> by this process uses.</summary>
     public static string TemporaryFor(string target) => $"{target}.{Environment.ProcessId}{TemporarySuffix}";
 
+    // The temporary's name is the process's, not the thread's (so a later run can tell an abandoned one, and a
+    // stopped run can remove its own): two threads writing one target must take turns, or one truncates, deletes
+    // or renames into place the other's half-written file. Turns are shared by targets whose hashes meet; a
+    // batch's writers seldom wait on one another's.
+    private static readonly Lock[] Turns = [.. Enumerable.Range(0, 64).Select(_ => new Lock())];
+
+    private static Lock TurnFor(string fullPath) =>
+        Turns[(int)((uint)StringComparer.Ordinal.GetHashCode(fullPath) % (uint)Turns.Length)];
+
     /// <summary>Writes <paramref name="content"/> to <paramref name="path"/>; returns its length.</summary>
     public static long Write(string path, ReadOnlySpan<byte> content, Durability durability)
     {
         var full = Path.GetFullPath(path);
         RequireReplaceable(full);
         var temp = TemporaryFor(full);
+        using var turn = TurnFor(full).EnterScope();
         try
         {
             WriteTemporary(temp, content, durability);
@@ -49,6 +59,7 @@ public static class AtomicFile
     {
         var full = Path.GetFullPath(path);
         var temp = TemporaryFor(full);
+        using var turn = TurnFor(full).EnterScope();
         try
         {
             WriteTemporary(temp, content, durability);
@@ -87,6 +98,7 @@ public static class AtomicFile
         var full = Path.GetFullPath(path);
         RequireReplaceable(full);
         var temp = TemporaryFor(full);
+        using var turn = TurnFor(full).EnterScope();
         try
         {
             long length;
