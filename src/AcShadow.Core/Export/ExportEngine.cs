@@ -1,6 +1,7 @@
 using System.Collections.Concurrent;
 using AcShadow.Core.Bsp;
 using AcShadow.Core.Dat;
+using AcShadow.Core.Dat.Objects;
 using AcShadow.Core.Formats;
 using AcShadow.Core.Json;
 using AcShadow.Core.Shapes;
@@ -25,6 +26,10 @@ namespace AcShadow.Core.Export;
 public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func<OutputFile, IReadOnlyList<FileEntry>>? bspSink = null)
 {
     private readonly ConcurrentDictionary<uint, Lazy<BspDumpResult>> _bsp = new();
+    // Each GfxObj's few bytes the shapes need, kept for the run: a part shared by many Setups is decoded once for its
+    // dump, not again for every later Setup after it has left the dat's small working set. A read that throws is
+    // not kept, so each Setup says so.
+    private readonly ConcurrentDictionary<uint, PartPhysics?> _parts = new();
 
     public IDatSource Dat { get; } = dat;
     public ShapeBuildOptions Options { get; } = options;
@@ -35,7 +40,10 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
         var setup = Dat.ReadSetup(setupId);
         if (setup is null) return null;
         var motions = new Poses.MotionReads(Dat);
-        var set = ShadowShapeBuilder.Build(setup, Dat.ReadGfxObj, Options, motions);
+        // The GfxObjs this Setup decoded, lent to their dumps below: a Setup with more parts than the dat keeps
+        // decoded would otherwise decode its first parts twice.
+        Dictionary<uint, GfxObj>? decoded = null;
+        var set = ShadowShapeBuilder.Build(setup, Part, Options, motions);
         var shadow = new OutputFile(FileFormats.Shadow.PathFor(setupId), FixtureKind.Shadow, setupId,
             ShadowFileWriter.Write(setup, set), set.Shapes.Count, 0);
         var diagnostics = new List<Diagnostic>(set.Diagnostics);
@@ -44,17 +52,28 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
         foreach (var gfxId in set.Shapes.Where(s => s.CollisionType == CollisionType.Bsp && s.GfxObjId is not null)
                      .Select(s => s.GfxObjId!.Value).Distinct())
         {
-            var dump = ExportGfxObj(gfxId);
+            var dump = ExportGfxObj(gfxId, decoded?.GetValueOrDefault(gfxId));
             if (dump.File is not null) bspFiles.Add(dump.File);
             bspEntries.AddRange(dump.Entries);
             diagnostics.AddRange(dump.Diagnostics);
         }
         return new SetupExport(setup, set, shadow, bspFiles, bspEntries, diagnostics) { MotionInputs = [.. motions.Ids] };
+
+        PartPhysics? Part(uint id)
+        {
+            if (_parts.TryGetValue(id, out var known)) return known;
+            var gfx = Dat.ReadGfxObj(id);
+            if (gfx is not null) (decoded ??= [])[id] = gfx;
+            return _parts.GetOrAdd(id, gfx is null ? null : PartPhysics.Of(gfx));
+        }
     }
 
     /// <summary>A GfxObj's BSP dump (no entry when it is absent or has no PhysicsBSP), made once and reused.</summary>
-    public BspDumpResult ExportGfxObj(uint gfxObjId) =>
-        _bsp.GetOrAdd(gfxObjId, id => new Lazy<BspDumpResult>(() => MakeBsp(id))).Value;
+    public BspDumpResult ExportGfxObj(uint gfxObjId) => ExportGfxObj(gfxObjId, null);
+
+    /// <summary>As <see cref="ExportGfxObj(uint)"/>, from <paramref name="decoded"/> (this GfxObj, already read) when given.</summary>
+    private BspDumpResult ExportGfxObj(uint gfxObjId, GfxObj? decoded) =>
+        _bsp.GetOrAdd(gfxObjId, id => new Lazy<BspDumpResult>(() => MakeBsp(id, decoded ?? Dat.ReadGfxObj(id)))).Value;
 
     public BspDump? ExtractBsp(uint gfxObjId)
     {
@@ -62,9 +81,9 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
         return gfx is null ? null : BspExtractor.Extract(gfx);
     }
 
-    private BspDumpResult MakeBsp(uint id)
+    private BspDumpResult MakeBsp(uint id, GfxObj? gfx)
     {
-        var dump = ExtractBsp(id);
+        var dump = gfx is null ? null : BspExtractor.Extract(gfx);
         if (dump is null) return new BspDumpResult(null, null, [], []);
         var path = FileFormats.Bsp.PathFor(id);
         OutputFile Acdream() => AcdreamGfxObjWriter.File(id, dump);

@@ -17,7 +17,11 @@ namespace AcShadow.Core.Shapes;
 /// </summary>
 public static class ShadowShapeBuilder
 {
-    public static ShadowShapeSet Build(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options, IMotionSource? motions = null)
+    public static ShadowShapeSet Build(Setup setup, Func<uint, GfxObj?> gfxObjs, ShapeBuildOptions options, IMotionSource? motions = null) =>
+        Build(setup, id => gfxObjs(id) is { } gfx ? PartPhysics.Of(gfx) : null, options, motions);
+
+    /// <summary>As above, each part looked up as the little the shapes need of it (<see cref="PartPhysics"/>; a lookup may throw <see cref="DatFormatException"/> as a GfxObj read does).</summary>
+    public static ShadowShapeSet Build(Setup setup, Func<uint, PartPhysics?> partPhysics, ShapeBuildOptions options, IMotionSource? motions = null)
     {
         var diagnostics = new List<Diagnostic>();
         var scale = options.EntityScale;
@@ -25,7 +29,7 @@ public static class ShadowShapeBuilder
         var placementFrame = pose.Placement;
         var placement = PlacementResolver.Describe(placementFrame);
         var provenance = pose.MotionFrames is null ? pose.Provenance : pose.Provenance with { DiffersFromPlacement = ReportMoves(setup, pose, diagnostics) };
-        var parts = LookUpParts(setup, gfxObjs, diagnostics);
+        var parts = LookUpParts(setup, partPhysics, diagnostics);
         // The dat stores exactly NumParts frames per placement; a source that does not is reported here,
         // and a part without a frame is reported where it is skipped (no-pose).
         if (placementFrame is { } used && used.Frames.Count != parts.Length)
@@ -71,15 +75,15 @@ public static class ShadowShapeBuilder
         return true;
     }
 
-    private static GfxObj?[] LookUpParts(Setup setup, Func<uint, GfxObj?> gfxObjs, List<Diagnostic> diagnostics)
+    private static PartPhysics?[] LookUpParts(Setup setup, Func<uint, PartPhysics?> partPhysics, List<Diagnostic> diagnostics)
     {
-        var parts = new GfxObj?[setup.Parts.Count];
+        var parts = new PartPhysics?[setup.Parts.Count];
         for (var i = 0; i < parts.Length; i++)
         {
             var id = setup.Parts[i];
             try
             {
-                parts[i] = gfxObjs(id);
+                parts[i] = partPhysics(id);
                 if (parts[i] is null)
                     diagnostics.Add(new(DiagnosticCodes.MissingGfxObj, $"part {i} (GfxObj 0x{id:X8}) is not in the dat: it contributes nothing"));
             }
@@ -95,7 +99,7 @@ public static class ShadowShapeBuilder
     /// CPhysicsObj::FindObjCollisions picks one family: parts' BSPs when any part has one, else
     /// CylSpheres, else Spheres.
     /// </summary>
-    private static List<ShadowShape> BuildRetail(Setup setup, GfxObj?[] parts, bool partsHaveBsp, ResolvedPose pose, float scale, List<Diagnostic> diagnostics)
+    private static List<ShadowShape> BuildRetail(Setup setup, PartPhysics?[] parts, bool partsHaveBsp, ResolvedPose pose, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();
         if (partsHaveBsp)
@@ -159,7 +163,7 @@ public static class ShadowShapeBuilder
     }
 
     /// <summary>The design's union builder, reproduced exactly so its divergences can be measured.</summary>
-    private static List<ShadowShape> BuildUnion(Setup setup, GfxObj?[] parts, ResolvedPose resolved, float scale, List<Diagnostic> diagnostics)
+    private static List<ShadowShape> BuildUnion(Setup setup, PartPhysics?[] parts, ResolvedPose resolved, float scale, List<Diagnostic> diagnostics)
     {
         var shapes = new List<ShadowShape>();
         for (var i = 0; i < setup.CylSpheres.Count; i++)
@@ -190,9 +194,9 @@ public static class ShadowShapeBuilder
         return shapes;
     }
 
-    private static ShadowShape BspShape(int partIndex, GfxObj gfx, Frame pose, float entityScale, float partScale)
+    private static ShadowShape BspShape(int partIndex, PartPhysics gfx, Frame pose, float entityScale, float partScale)
     {
-        var root = gfx.PhysicsBsp!.BoundingSphere;
+        var root = gfx.BspBound!.Value;
         var position = pose.Position * entityScale;
         // The root sphere's centre out of the part's frame as the client holds it (Frame::combine, Frame::localtoglobal).
         var center = PartPose.InEntity(position, pose.Rotation, partScale).ToEntity(root.Center);
