@@ -232,7 +232,8 @@ public sealed record BenchReport(
         o.WriteLine("| Target | Measured | Goal | Met |");
         o.WriteLine("|---|---|---|---|");
         foreach (var r in Ratios)
-            o.WriteLine(Invariant($"| {r.Name} | {r.Value:0.00} | {r.Comparison.Replace("<=", "≤").Replace(">=", "≥")} {r.Target} | {(r.Met ? "yes" : "**no**")} |"));
+            // Three places: a ratio of 0.503 against a goal of 0.5 read "0.50 | ≤ 0.5 | no" with two.
+            o.WriteLine(Invariant($"| {r.Name} | {r.Value:0.000} | {r.Comparison.Replace("<=", "≤").Replace(">=", "≥")} {r.Target:0.###} | {(r.Met ? "yes" : "**no**")} |"));
         foreach (var c in Checks)
             o.WriteLine($"| {c.Name} | {(c.Passed ? "yes" : string.Join("; ", c.Problems))} | yes | {(c.Passed ? "yes" : "**no**")} |");
         o.WriteLine(Invariant($"Collision: {Collision.GfxObjs} GfxObjs of {Collision.MinPolygons}-{Collision.MaxPolygons} physics polygons (median {Collision.MedianPolygons}), {Collision.Queries} probes, {Collision.Disagreements} disagreements."));
