@@ -40,6 +40,8 @@ public sealed class OutputLedger
     /// <summary>The write ended: whole (its length given) or not at all (null).</summary>
     public void End(string folder, string target, long? written)
     {
+        // Made before the lock: every job's every file passes here.
+        var fullFolder = written is null ? null : Path.GetFullPath(folder);
         lock (_gate)
         {
             _inFlight.Remove(target);
@@ -47,7 +49,7 @@ public sealed class OutputLedger
             {
                 _files++;
                 _bytes += bytes;
-                _folders.Add(Path.GetFullPath(folder));
+                _folders.Add(fullFolder!);
             }
             Monitor.PulseAll(_gate);
         }
