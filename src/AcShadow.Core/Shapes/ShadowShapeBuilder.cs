@@ -10,8 +10,8 @@ using AcShadow.Fixtures.Shapes;
 namespace AcShadow.Core.Shapes;
 
 /// <summary>
-/// Turns a Setup into the collision shapes an entity registers. Pure: the Setup and a GfxObj lookup in,
-/// a <see cref="ShadowShapeSet"/> out. Everything skipped becomes a <see cref="Diagnostic"/>.
+/// Turns a Setup into the collision shapes an entity registers. Pure: the Setup and a lookup of its parts
+/// (<see cref="PartPhysics"/>, or whole GfxObjs) in, a <see cref="ShadowShapeSet"/> out. Everything skipped becomes a <see cref="Diagnostic"/>.
 /// Parts are posed as <see cref="RetailPoseResolver"/> decides (motion tables and animations from
 /// <paramref name="motions"/>; without it, a Setup that names them gets a diagnostic and its placement pose).
 /// </summary>
@@ -109,8 +109,8 @@ public static class ShadowShapeBuilder
                 diagnostics.Add(new(DiagnosticCodes.DefaultScaleCount, $"DefaultScale has {setup.DefaultScale.Count} entries for {parts.Length} parts: ignored"));
             for (var i = 0; i < parts.Length; i++)
             {
-                var gfx = parts[i];
-                if (gfx?.HasPhysics != true) continue;
+                var part = parts[i];
+                if (part?.HasPhysics != true) continue;
                 if (!TryRetailPose(pose, parts.Length, i, out var partPose, diagnostics, setup.Parts[i])) continue;
                 var partScale = scale;
                 if (useDefaultScale)
@@ -119,9 +119,9 @@ public static class ShadowShapeBuilder
                     var s = setup.DefaultScale[i];
                     partScale *= s.Z;
                     if (s.X != s.Z || s.Y != s.Z)
-                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"part {i} (GfxObj 0x{gfx.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z")));
+                        diagnostics.Add(new(DiagnosticCodes.NonUniformScale, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"part {i} (GfxObj 0x{part.Id:X8}) DefaultScale ({s.X}, {s.Y}, {s.Z}) is not uniform; BSP collision uses Z")));
                 }
-                shapes.Add(BspShape(i, gfx, partPose, scale, partScale));
+                shapes.Add(BspShape(i, part, partPose, scale, partScale));
             }
             return shapes;
         }
@@ -184,24 +184,24 @@ public static class ShadowShapeBuilder
         }
         for (var i = 0; i < parts.Length; i++)
         {
-            var gfx = parts[i];
-            if (gfx?.HasPhysics != true) continue;
+            var part = parts[i];
+            if (part?.HasPhysics != true) continue;
             var frame = resolved.Placement;
             var pose = resolved.MotionFrames is { } motion && i < motion.Count ? motion[i]
                 : frame is not null && i < frame.Frames.Count ? frame.Frames[i] : Frame.Identity;
-            shapes.Add(BspShape(i, gfx, pose, scale, scale));
+            shapes.Add(BspShape(i, part, pose, scale, scale));
         }
         return shapes;
     }
 
-    private static ShadowShape BspShape(int partIndex, PartPhysics gfx, Frame pose, float entityScale, float partScale)
+    private static ShadowShape BspShape(int partIndex, PartPhysics part, Frame pose, float entityScale, float partScale)
     {
-        var root = gfx.BspBound!.Value;
+        var root = part.BspBound!.Value;
         var position = pose.Position * entityScale;
         // The root sphere's centre out of the part's frame as the client holds it (Frame::combine, Frame::localtoglobal).
         var center = PartPose.InEntity(position, pose.Rotation, partScale).ToEntity(root.Center);
         var radius = root.Radius * partScale;
-        return new ShadowShape(ShapeSource.Part, partIndex, gfx.Id, CollisionType.Bsp, position, pose.Rotation, partScale, radius, 0f, new Sphere(center, radius));
+        return new ShadowShape(ShapeSource.Part, partIndex, part.Id, CollisionType.Bsp, position, pose.Rotation, partScale, radius, 0f, new Sphere(center, radius));
     }
 
     /// <summary>The Setup's CylSpheres, Spheres, Radius and Height that hold NaN or infinity, each as a message.</summary>
