@@ -19,13 +19,43 @@ public static class AtomicFile
 
     // The temporary's name is the process's, not the thread's (so a later run can tell an abandoned one, and a
     // stopped run can remove its own): two threads writing one target must take turns, or one truncates, deletes
-    // or renames into place the other's half-written file. Turns are shared by targets whose hashes meet: with 256,
-    // two jobs' writes of different files meet in one of 256 (a 2-job batch of 8,888 files waited 10-18 times a run
-    // with 64, 1-2 with 256: sched_switch traces).
-    private static readonly Lock[] Turns = [.. Enumerable.Range(0, 256).Select(_ => new Lock())];
+    // or renames into place the other's half-written file. Each target has a turn of its own, kept while a write
+    // of it is in flight, so writes of different targets never wait on each other. Turns shared by targets whose
+    // hashes met deadlocked chart --jobs 2: chart.csv's streamed write held its turn while its callback waited for
+    // a worker, and the worker's failure map waited for that same turn.
+    private static readonly Dictionary<string, Turn> Turns = new(StringComparer.Ordinal);
+    private static readonly Lock TurnsGuard = new();
 
-    private static Lock TurnFor(string fullPath) =>
-        Turns[(int)((uint)StringComparer.Ordinal.GetHashCode(fullPath) % (uint)Turns.Length)];
+    /// <summary>One target's turn and how many writes of it hold it or wait for it (read and changed under <see cref="TurnsGuard"/>).</summary>
+    private sealed class Turn
+    {
+        public readonly Lock Lock = new();
+        public int Writers;
+    }
+
+    /// <summary>A turn taken; disposing gives it back, and forgets it when no other write of the target waits.</summary>
+    private readonly struct HeldTurn(string fullPath, Turn turn) : IDisposable
+    {
+        public void Dispose()
+        {
+            turn.Lock.Exit();
+            lock (TurnsGuard)
+                if (--turn.Writers == 0) Turns.Remove(fullPath);
+        }
+    }
+
+    /// <summary>Waits for the target's turn (a thread may take its own again: the lock is reentrant).</summary>
+    private static HeldTurn TakeTurn(string fullPath)
+    {
+        Turn? turn;
+        lock (TurnsGuard)
+        {
+            if (!Turns.TryGetValue(fullPath, out turn)) Turns.Add(fullPath, turn = new Turn());
+            turn.Writers++;
+        }
+        turn.Lock.Enter();
+        return new HeldTurn(fullPath, turn);
+    }
 
     /// <summary>Writes <paramref name="content"/> to <paramref name="path"/>; returns its length.</summary>
     public static long Write(string path, ReadOnlySpan<byte> content, Durability durability)
@@ -33,7 +63,7 @@ public static class AtomicFile
         var full = Path.GetFullPath(path);
         RequireReplaceable(full);
         var temp = TemporaryFor(full);
-        using var turn = TurnFor(full).EnterScope();
+        using var turn = TakeTurn(full);
         try
         {
             WriteTemporary(temp, content, durability);
@@ -60,7 +90,7 @@ public static class AtomicFile
     {
         var full = Path.GetFullPath(path);
         var temp = TemporaryFor(full);
-        using var turn = TurnFor(full).EnterScope();
+        using var turn = TakeTurn(full);
         try
         {
             WriteTemporary(temp, content, durability);
@@ -99,7 +129,7 @@ public static class AtomicFile
         var full = Path.GetFullPath(path);
         RequireReplaceable(full);
         var temp = TemporaryFor(full);
-        using var turn = TurnFor(full).EnterScope();
+        using var turn = TakeTurn(full);
         try
         {
             long length;
