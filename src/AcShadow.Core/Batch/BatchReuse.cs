@@ -33,6 +33,11 @@ public sealed class BatchReuse(IncrementalState? previous, string toolKey, Batch
     /// <summary>Each object's digest, computed once however many Setups share it (32 bytes an object).</summary>
     private readonly ConcurrentDictionary<uint, byte[]> _digests = new();
     private readonly byte[] _key = Encoding.UTF8.GetBytes(toolKey);
+    /// <summary>
+    /// Each recorded file's check, made once however many Setups list it: a GfxObj's dump is listed by every Setup
+    /// that names the part, and each check reads and hashes the whole file.
+    /// </summary>
+    private readonly ConcurrentDictionary<FileEntry, bool> _intact = new();
 
     public string Fingerprint(uint setupId, IReadOnlyList<uint> parts)
     {
@@ -70,7 +75,7 @@ public sealed class BatchReuse(IncrementalState? previous, string toolKey, Batch
         if (!_previous.TryGetValue(setupId, out var record)) return null;
         if (Fingerprint(setupId, record.Parts) != record.Fingerprint) return null;
         foreach (var file in record.Files)
-            if (!isOnDisk(file)) return null;
+            if (!_intact.GetOrAdd(file, isOnDisk)) return null;
         return new SetupOutcome(null, record.Files, record, true);
     }
 }
