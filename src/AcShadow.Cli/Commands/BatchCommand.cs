@@ -298,12 +298,37 @@ public static class BatchCommand
         if (FileKinds.Of(target) != FileKind.Regular) return false;
         try
         {
-            using var stream = new FileStream(target, FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete, 1 << 16);
-            return stream.Length == file.Bytes && Convert.ToHexStringLower(SHA256.HashData(stream)) == file.Sha256;
+            using var handle = File.OpenHandle(target, FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete);
+            return RandomAccess.GetLength(handle) == file.Bytes && Convert.ToHexStringLower(Sha256Of(handle)) == file.Sha256;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
             return false;
+        }
+    }
+
+    /// <summary>
+    /// A file's SHA-256 read through one rented buffer: a stream's own 64 KB buffer for each of the previous run's
+    /// files (22,354 on the scale dat) was 1.4 GB of garbage, and a quarter of an incremental run went to collecting it.
+    /// </summary>
+    private static byte[] Sha256Of(Microsoft.Win32.SafeHandles.SafeFileHandle handle)
+    {
+        using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+        var buffer = System.Buffers.ArrayPool<byte>.Shared.Rent(1 << 18);
+        try
+        {
+            long at = 0;
+            int read;
+            while ((read = RandomAccess.Read(handle, buffer, at)) > 0)
+            {
+                hash.AppendData(buffer, 0, read);
+                at += read;
+            }
+            return hash.GetHashAndReset();
+        }
+        finally
+        {
+            System.Buffers.ArrayPool<byte>.Shared.Return(buffer);
         }
     }
 
