@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
@@ -18,6 +19,7 @@ using AcShadow.Files;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
+using Microsoft.Win32.SafeHandles;
 
 namespace AcShadow.Cli.Commands;
 
@@ -311,10 +313,10 @@ public static class BatchCommand
     /// A file's SHA-256 read through one rented buffer: a stream's own 64 KB buffer for each of the previous run's
     /// files (22,354 on the scale dat) was 1.4 GB of garbage, and a quarter of an incremental run went to collecting it.
     /// </summary>
-    private static byte[] Sha256Of(Microsoft.Win32.SafeHandles.SafeFileHandle handle)
+    private static byte[] Sha256Of(SafeFileHandle handle)
     {
         using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
-        var buffer = System.Buffers.ArrayPool<byte>.Shared.Rent(1 << 18);
+        var buffer = ArrayPool<byte>.Shared.Rent(1 << 18);
         try
         {
             long at = 0;
@@ -328,7 +330,7 @@ public static class BatchCommand
         }
         finally
         {
-            System.Buffers.ArrayPool<byte>.Shared.Return(buffer);
+            ArrayPool<byte>.Shared.Return(buffer);
         }
     }
 
