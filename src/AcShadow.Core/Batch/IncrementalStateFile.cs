@@ -1,4 +1,5 @@
 using System.Security.Cryptography;
+using System.Text;
 using System.Text.Json;
 using AcShadow.Core.Export;
 using AcShadow.Core.Formats;
@@ -17,14 +18,45 @@ namespace AcShadow.Core.Batch;
 /// </summary>
 public static class IncrementalStateFile
 {
-    public static byte[] Write(IncrementalState state) => CanonicalJsonWriter.WriteUtf8(Body(state).Add("sha256", Checksum(state)));
+    /// <summary>The state's canonical bytes, its checksum last. The body is serialised once and the member spliced in before the closing brace.</summary>
+    public static byte[] Write(IncrementalState state)
+    {
+        var body = CanonicalJsonWriter.WriteUtf8(Body(state));
+        // A body laid out member by member ends in "\n}\n"; one small enough to sit on a line (no Setups) is written whole again.
+        if (!body.AsSpan().StartsWith("{\n"u8) || !body.AsSpan().EndsWith(Closing))
+            return CanonicalJsonWriter.WriteUtf8(Body(state).Add("sha256", Checksum(body)));
+        var sum = Encoding.ASCII.GetBytes(Checksum(body));
+        return [.. body.AsSpan(0, body.Length - Closing.Length), .. MemberHead, .. sum, (byte)'"', .. Closing];
+    }
 
     /// <summary>
     /// The SHA-256 of the state's canonical bytes without this field, written last: a state edited by hand
     /// (a count, a hash, a path) no longer matches it and is not trusted, since reuse copies a file's
     /// recorded entry into index.json unread. A cache, not a seal: it catches edits, not forgeries.
     /// </summary>
-    private static string Checksum(IncrementalState state) => Convert.ToHexStringLower(SHA256.HashData(CanonicalJsonWriter.WriteUtf8(Body(state))));
+    private static string Checksum(ReadOnlySpan<byte> canonicalBody) => Convert.ToHexStringLower(SHA256.HashData(canonicalBody));
+
+    private static ReadOnlySpan<byte> Closing => "\n}\n"u8;
+    private static ReadOnlySpan<byte> MemberHead => ",\n  \"sha256\": \""u8;
+    private const int HexLength = 2 * SHA256.HashSizeInBytes;
+
+    /// <summary>
+    /// Whether the file is exactly what <see cref="Write"/> makes of its body: the checksum member last, and the
+    /// bytes around it hashing to it. Checked over the bytes as read; serialising a retail state again to hash
+    /// it cost an incremental run with nothing to do a fifth of its time (9.5 MB on the 7,000-Setup dat).
+    /// </summary>
+    public static bool HoldsItsChecksum(ReadOnlySpan<byte> file)
+    {
+        var member = file.Length - Closing.Length - MemberHead.Length - HexLength - 1;
+        if (member < 0 || !file.EndsWith(Closing) || !file[member..].StartsWith(MemberHead) || file[^(Closing.Length + 1)] != '"') return false;
+        using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+        hash.AppendData(file[..member]);
+        hash.AppendData(Closing);
+        Span<byte> sum = stackalloc byte[SHA256.HashSizeInBytes];
+        hash.GetHashAndReset(sum);
+        Span<byte> hex = stackalloc byte[HexLength];
+        return Convert.TryToHexStringLower(sum, hex, out _) && hex.SequenceEqual(file.Slice(member + MemberHead.Length, HexLength));
+    }
 
     private static JsonObj Body(IncrementalState state) => new JsonObj()
         .Add("format", IncrementalState.Format)
@@ -57,7 +89,9 @@ public static class IncrementalStateFile
                     f.GetProperty("bytes").GetInt64(),
                     f.GetProperty("sha256").GetString()!)).ToArray())).ToArray();
             var state = new IncrementalState(root.GetProperty("tool").GetString()!, setups);
-            return root.TryGetProperty("sha256", out var sum) && sum.ValueKind == JsonValueKind.String && sum.GetString() == Checksum(state) ? state : null;
+            // Laid out otherwise (by hand, or the small state written on one line): the checksum of the state as read, serialised again.
+            return HoldsItsChecksum(utf8) || (root.TryGetProperty("sha256", out var sum) && sum.ValueKind == JsonValueKind.String
+                && sum.GetString() == Checksum(CanonicalJsonWriter.WriteUtf8(Body(state)))) ? state : null;
         }
         catch (Exception e) when (e is JsonException or InvalidOperationException or KeyNotFoundException or FormatException)
         {
