@@ -101,12 +101,15 @@ public static class BatchCommand
             MotionTable = options.MotionTable,
             Movement = movement,
         };
+        // The last state is read (megabytes on a retail dat) beside the survey of the folder when there is a second core.
+        var lastState = !incremental ? null : jobs > 1 ? Task.Run(() => ReadState(outDir)) : Task.FromResult(ReadState(outDir));
         var previous = RefuseForeignFiles(folder, plan, formats);
         // Decoded objects are kept only while in use (a bounded working set): memory does not grow with the dat.
         var source = dat.PortalWorkingSet(WorkingSetPerJob * jobs);
+        var last = lastState?.GetAwaiter().GetResult();
         // Fingerprints (every object read again and hashed) only when the state they feed is written.
         var reuse = incremental
-            ? new BatchReuse(ReadState(outDir), IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HoldsRecordedBytes(outDir, file))
+            ? new BatchReuse(last?.State, IncrementalState.ToolKey(options, formats), dat.Portal.Archive.ReadObjectBytes, file => HoldsRecordedBytes(outDir, file))
             : null;
 
         int filesWritten = 0, unchanged = 0, indexRemoved = 0;
@@ -176,7 +179,11 @@ public static class BatchCommand
         });
         // The state for the next --incremental run, then index.json, last: an index on disk only ever
         // describes files already written.
-        if (incremental) Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
+        // A state that is the last one itself, whose file still holds the bytes read, is left alone unserialised:
+        // writing a retail state again only to find it unchanged was a sixth of an incremental run with nothing to do.
+        if (incremental && !(last is { AsWritten: true } kept && result.State.IsUnchangedFrom(kept.State)
+                && HoldsBytes(outDir, IncrementalState.Path, kept.Bytes, kept.Sha256)))
+            Write(IncrementalState.Path, IncrementalStateFile.Write(result.State));
         if (incremental) Write(FileFormats.Index.Path, result.IndexJson());
         else
         {
@@ -218,23 +225,10 @@ public static class BatchCommand
         // A folder that was empty holds nothing to refuse (and no index): on a first run that is every planned path's two stats saved.
         if (folder.StartedEmpty) return new HashSet<string>(StringComparer.Ordinal);
         var listed = IndexListing.Read(outDir);
-        var candidates = new List<OutputFile>();
-        var considered = new List<string>();
-        // A file the index lists is ours even when damaged; anything but a regular file never is.
-        bool NeedsCheck(string relative)
-        {
-            considered.Add(relative);
-            return FileKinds.Of(OutputPaths.Target(outDir, relative)) switch
-            {
-                FileKind.Missing => false,
-                FileKind.Regular => !listed.Contains(relative),
-                _ => true,
-            };
-        }
-        void Consider(string relative, string format)
-        {
-            if (NeedsCheck(relative)) candidates.Add(new OutputFile(relative, ForeignFileGuard.JsonHead(format).ToArray()));
-        }
+        // Each path with the head a file of its format starts with, made only for the few that need a look inside.
+        var planned = new List<(string Relative, Func<OutputFile> Candidate)>();
+        void Consider(string relative, string format) => planned.Add((relative, () => new OutputFile(relative, ForeignFileGuard.JsonHead(format).ToArray())));
+        void ConsiderText(string relative, string head) => planned.Add((relative, () => OutputFile.Text(relative, head)));
         foreach (var setup in plan.Setups) Consider(FileFormats.Shadow.PathFor(setup.Id), FileFormats.Shadow.Format);
         var gfxobjs = Path.Combine(outDir, "gfxobjs");
         if (Directory.Exists(gfxobjs))
@@ -242,21 +236,23 @@ public static class BatchCommand
             {
                 var relative = "gfxobjs/" + Path.GetFileName(file);
                 if (relative.EndsWith(".bsp.json", StringComparison.Ordinal)) Consider(relative, FileFormats.Bsp.Format);
-                else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal) && NeedsCheck(relative))
-                    candidates.Add(OutputFile.Text(relative, "{\n  \"GfxObjId\": 0,\n"));
+                else if (relative.EndsWith(".gfxobj.json", StringComparison.Ordinal)) ConsiderText(relative, "{\n  \"GfxObjId\": 0,\n");
             }
         if (plan.Scene is not null) Consider(FileFormats.Scene.Path, FileFormats.Scene.Format);
         foreach (var cell in plan.Scene?.Cells ?? [])
         {
             Consider(FileFormats.Cell.PathFor(cell.Id), FileFormats.Cell.Format);
-            var acdream = FileFormats.AcdreamCell.PathFor(cell.Id);
-            if (formats.HasFlag(OutputFormats.Acdream) && NeedsCheck(acdream))
-                candidates.Add(OutputFile.Text(acdream, "{\n  \"CellId\": 0,\n"));
+            if (formats.HasFlag(OutputFormats.Acdream)) ConsiderText(FileFormats.AcdreamCell.PathFor(cell.Id), "{\n  \"CellId\": 0,\n");
         }
         Consider(FileFormats.Index.Path, FileFormats.Index.Format);
         Consider(IncrementalState.Path, IncrementalState.Format);
         // A listed file is replaced unread: one that is the dat this run reads is refused first.
-        folder.RefuseInputs(considered, "; nothing was written");
+        var kinds = folder.Survey([.. planned.Select(p => p.Relative)], "; nothing was written");
+        // A file the index lists is ours even when damaged; anything but a regular file never is.
+        var candidates = new List<OutputFile>();
+        for (var i = 0; i < planned.Count; i++)
+            if (kinds[i] switch { FileKind.Missing => false, FileKind.Regular => !listed.Contains(planned[i].Relative), _ => true })
+                candidates.Add(planned[i].Candidate());
         folder.RefuseForeign(candidates, listed);
         return listed;
     }
@@ -294,14 +290,16 @@ public static class BatchCommand
     /// Whether a file the previous run wrote still holds exactly the bytes it recorded: its SHA-256, not only
     /// its size (a same-length edit keeps the size). A link or anything but a regular file is not reused.
     /// </summary>
-    private static bool HoldsRecordedBytes(string outDir, FileEntry file)
+    private static bool HoldsRecordedBytes(string outDir, FileEntry file) => HoldsBytes(outDir, file.RelativePath, file.Bytes, file.Sha256);
+
+    private static bool HoldsBytes(string outDir, string relativePath, long bytes, string sha256)
     {
-        var target = OutputPaths.Target(outDir, file.RelativePath);
+        var target = OutputPaths.Target(outDir, relativePath);
         if (FileKinds.Of(target) != FileKind.Regular) return false;
         try
         {
             using var handle = File.OpenHandle(target, FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete);
-            return RandomAccess.GetLength(handle) == file.Bytes && Convert.ToHexStringLower(Sha256Of(handle)) == file.Sha256;
+            return RandomAccess.GetLength(handle) == bytes && Convert.ToHexStringLower(Sha256Of(handle)) == sha256;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
@@ -334,14 +332,24 @@ public static class BatchCommand
         }
     }
 
+    /// <summary>
+    /// The last state read: whether its file is byte for byte what the writer makes (<see cref="IncrementalStateFile.HoldsItsChecksum"/>),
+    /// and the file's size and SHA-256, to tell later that it still holds those bytes.
+    /// </summary>
+    private sealed record LastState(IncrementalState State, bool AsWritten, long Bytes, string Sha256);
+
     /// <summary>The previous run's incremental.json, or null when there is none or it is unreadable (then everything is exported).</summary>
-    private static IncrementalState? ReadState(string outDir)
+    private static LastState? ReadState(string outDir)
     {
         var path = Path.Combine(outDir, IncrementalState.Path);
         try
         {
             // A regular file only: a link (or a FIFO) is not this folder's state.
-            return FileKinds.Of(path) == FileKind.Regular ? IncrementalStateFile.TryRead(File.ReadAllBytes(path)) : null;
+            if (FileKinds.Of(path) != FileKind.Regular) return null;
+            var bytes = File.ReadAllBytes(path);
+            return IncrementalStateFile.TryRead(bytes) is { } state
+                ? new LastState(state, IncrementalStateFile.HoldsItsChecksum(bytes), bytes.Length, Convert.ToHexStringLower(SHA256.HashData(bytes)))
+                : null;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

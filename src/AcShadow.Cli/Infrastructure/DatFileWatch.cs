@@ -24,8 +24,8 @@ public sealed class DatFileWatch
         _identity = FileKinds.Identity(stream.SafeFileHandle);
     }
 
-    /// <summary>Whether <paramref name="identity"/> (<see cref="FileKinds.Identity(string)"/>) is this dat file's.</summary>
-    public bool Is(byte[] identity) => _identity is not null && identity.AsSpan().SequenceEqual(_identity);
+    /// <summary>The file's device and inode numbers when it was opened (<see cref="FileKinds.Identity(string)"/>); null where the platform cannot say.</summary>
+    public byte[]? Identity => _identity;
 
     /// <summary>How the file changed since it was opened, or null when it did not.</summary>
     public string? Change()

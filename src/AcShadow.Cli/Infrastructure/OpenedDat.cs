@@ -50,9 +50,14 @@ public sealed class OpenedDat(DatDatabase portal, DatDatabase? cell, string desc
     }
 
     /// <summary>Whether <paramref name="path"/> names (through any link) a dat file this run reads.</summary>
-    public bool Reads(string path) =>
-        FileKinds.Identity(path) is { } identity && ((watches ?? []).Any(w => w.Is(identity))
-            || (foundCell is { File: var found } && FileKinds.Identity(found) is { } cellIdentity && cellIdentity.AsSpan().SequenceEqual(identity)));
+    public bool Reads(string path) => FileKinds.Identity(path) is { } identity && IsOneOf(identity, ReadIdentities());
+
+    /// <summary>The device and inode numbers of each dat file this run reads (a cell dat found beside the portal dat too, opened or not).</summary>
+    public IReadOnlyList<byte[]> ReadIdentities() =>
+        [.. (watches ?? []).Select(w => w.Identity).OfType<byte[]>(), .. foundCell is { File: var found } && FileKinds.Identity(found) is { } cell ? [cell] : Array.Empty<byte[]>()];
+
+    /// <summary>Whether <paramref name="identity"/> is one of <paramref name="identities"/> (<see cref="ReadIdentities"/>).</summary>
+    public static bool IsOneOf(byte[] identity, IReadOnlyList<byte[]> identities) => identities.Any(i => i.AsSpan().SequenceEqual(identity));
 
     /// <summary>
     /// A dat's identity with its content's SHA-256 (the whole file read once more): what batch records in

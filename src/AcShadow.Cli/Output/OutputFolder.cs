@@ -87,10 +87,35 @@ public sealed class OutputFolder : IDisposable
         foreach (var relative in relativePaths)
         {
             var target = OutputPaths.Target(Root, relative);
-            if (_reads.Reads(target))
-                throw new CliException(ExitCodes.OutputFailed, $"{Option}: {target} is a dat this run reads: acshadow never writes over its input; move the dat out of {Root} or pass another folder{said}");
+            if (_reads.Reads(target)) throw ReadsInput(target, said);
         }
     }
+
+    /// <summary>
+    /// What is at each path, refusing the run as <see cref="RefuseInputs"/> does when one names a dat it reads:
+    /// one look at each path (a link's target is looked at too), where asking its kind and then whether it is an
+    /// input took three: a batch surveys every path it plans before writing (29,000 on the 7,000-Setup scale
+    /// dat), and those looks were a fifth of an incremental run with nothing to do.
+    /// </summary>
+    public FileKind[] Survey(IReadOnlyList<string> relativePaths, string said)
+    {
+        var targets = OutputPaths.Targets(Root, relativePaths);
+        var inputs = _reads?.ReadIdentities() ?? [];
+        var kinds = new FileKind[targets.Length];
+        for (var i = 0; i < targets.Length; i++)
+        {
+            var (kind, identity) = FileKinds.Look(targets[i]);
+            kinds[i] = kind;
+            var isInput = kind == FileKind.SymbolicLink
+                ? _reads?.Reads(targets[i]) == true
+                : identity is not null && OpenedDat.IsOneOf(identity, inputs);
+            if (isInput) throw ReadsInput(targets[i], said);
+        }
+        return kinds;
+    }
+
+    private CliException ReadsInput(string target, string said) =>
+        new(ExitCodes.OutputFailed, $"{Option}: {target} is a dat this run reads: acshadow never writes over its input; move the dat out of {Root} or pass another folder{said}");
 
     /// <summary>Whether the file already holds exactly these bytes (then it is left alone: its timestamp kept, no new inode).</summary>
     public bool IsUnchanged(string relativePath, ReadOnlySpan<byte> content) => UnchangedCheck.IsUnchanged(Root, relativePath, content);

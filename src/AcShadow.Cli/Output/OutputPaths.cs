@@ -19,14 +19,45 @@ public static class OutputPaths
     /// </summary>
     public static string Target(string root, string relativePath)
     {
-        // By spelling: the paths a run makes are plain names under the folder (a report's own name may hold
-        // any character a file name may, ':' included); none is rooted or climbs out.
+        RequireSpelledInside(root, relativePath);
+        RequireFoldersInside(root, relativePath);
+        return FullPath(root, relativePath);
+    }
+
+    /// <summary>
+    /// <see cref="Target"/> of each path, each folder on the way looked at once, not once for every path in it:
+    /// a batch surveys every path it plans, thousands in setups/ and gfxobjs/.
+    /// </summary>
+    public static string[] Targets(string root, IReadOnlyList<string> relativePaths)
+    {
+        var foldersSeen = new HashSet<string>(StringComparer.Ordinal);
+        var targets = new string[relativePaths.Count];
+        for (var i = 0; i < targets.Length; i++)
+        {
+            var relative = relativePaths[i];
+            RequireSpelledInside(root, relative);
+            if (foldersSeen.Add(relative[..Math.Max(0, relative.LastIndexOf('/'))])) RequireFoldersInside(root, relative);
+            targets[i] = FullPath(root, relative);
+        }
+        return targets;
+    }
+
+    // By spelling: the paths a run makes are plain names under the folder (a report's own name may hold
+    // any character a file name may, ':' included); none is rooted or climbs out.
+    private static void RequireSpelledInside(string root, string relativePath)
+    {
         if (Path.IsPathRooted(relativePath) || relativePath.Split('/', Path.DirectorySeparatorChar).Contains(".."))
             throw new CliException(ExitCodes.OutputFailed, $"--out: {relativePath} is not a path inside {root}: acshadow writes only inside --out");
+    }
+
+    private static void RequireFoldersInside(string root, string relativePath)
+    {
         if (FolderLinks.FirstDetour(root, relativePath) is { } detour)
             throw new CliException(ExitCodes.OutputFailed, Detour(detour.Path, detour.Kind));
-        return Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
     }
+
+    private static string FullPath(string root, string relativePath) =>
+        Path.GetFullPath(Path.Combine(root, relativePath.Replace('/', Path.DirectorySeparatorChar)));
 
     /// <summary>Before anything is written: none of the folders a run writes in is a link (or a file) leading elsewhere.</summary>
     public static void RequireSubfoldersInside(string root)

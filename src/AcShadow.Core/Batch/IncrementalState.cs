@@ -21,6 +21,17 @@ public sealed record IncrementalState(string Tool, IReadOnlyList<IncrementalSetu
     /// </summary>
     public static string ToolKey(ShapeBuildOptions options, OutputFormats formats) =>
         $"{typeof(ExportEngine).Assembly.ManifestModule.ModuleVersionId:N}/{options.Policy.Name()}/{options.EntityScale.ToString("R", System.Globalization.CultureInfo.InvariantCulture)}/{formats.Name()}/{Poses.PoseNames.Name(options.Pose)}/{Poses.PoseNames.Name(options.DoorState)}/{options.MotionTable:X8}";
+
+    /// <summary>
+    /// Whether this state is <paramref name="previous"/> itself: the same tool, and every Setup's record the very
+    /// record read from it (reused, not made again), no more, no fewer. Then its file holds the same bytes.
+    /// </summary>
+    public bool IsUnchangedFrom(IncrementalState previous)
+    {
+        if (Tool != previous.Tool || Setups.Count != previous.Setups.Count) return false;
+        var records = previous.Setups.ToDictionary(s => s.Id);
+        return Setups.All(s => records.TryGetValue(s.Id, out var record) && ReferenceEquals(s, record));
+    }
 }
 
 /// <summary>One Setup's record in <see cref="IncrementalState"/>: every file written for it (its shadow file, its BSP dumps, in the chosen formats).</summary>

@@ -33,6 +33,25 @@ public sealed class IncrementalTests
     }
 
     [Fact]
+    public void A_state_laid_out_by_hand_is_trusted_by_its_checksum_and_written_again_as_the_writer_lays_it_out()
+    {
+        using var dat = ForgeDat(SampleDats.Spec);
+        var (first, dir) = RunBatch("--all", "--dat", dat.Path, "--incremental");
+        using (dir)
+        {
+            Assert.Equal(0, first.ExitCode);
+            var state = Path.Combine(dir.Path, "incremental.json");
+            var written = File.ReadAllText(state);
+            // The same JSON, indented with tabs: its checksum (over the canonical body) still holds.
+            File.WriteAllText(state, written.Replace("  ", "\t", StringComparison.Ordinal));
+            var second = CliRun.Of("batch", "--out", dir.Path, "--all", "--dat", dat.Path, "--incremental");
+            Assert.Equal(0, second.ExitCode);
+            Assert.Contains($"{SampleSetups} setup(s) unchanged in the dat and not re-exported", second.Out);
+            Assert.Equal(written, File.ReadAllText(state));
+        }
+    }
+
+    [Fact]
     public void A_changed_gfxobj_reexports_only_the_setups_that_use_it_and_the_result_equals_a_fresh_run()
     {
         using var original = ForgeDat(SampleDats.Spec);
