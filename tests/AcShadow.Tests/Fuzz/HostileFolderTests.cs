@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using System.Security.Cryptography;
 using System.Text;
 using System.Text.Json;
@@ -315,6 +316,36 @@ public sealed class HostileFolderTests
         Assert.True(run.ExitCode == 6, $"exit {run.ExitCode}\n{run.Out}\n{run.Error}");
         Assert.Contains($"--out: {dat} is a dat this run reads: acshadow never writes over its input", run.Error);
         Assert.Equal(before, Sha(File.ReadAllBytes(dat)));
+    }
+
+    // The folder's survey looks at each path once: a hard link is the dat by its identity, a symbolic link by where it leads.
+    [Theory]
+    [InlineData("hard")]
+    [InlineData("symbolic")]
+    public void A_batch_never_writes_over_a_dat_it_reads_through_a_link_its_index_lists(string link)
+    {
+        using var dats = SampleDat.WriteToTempFolder();
+        using var dir = new TempDir();
+        var portal = Path.Combine(dats.Path, "client_portal.dat");
+        Assert.Equal(0, Batch(dir.Path, "--doors", "--dat", portal).ExitCode);
+        var listed = Path.Combine(dir.Path, Door);
+        File.Delete(listed);
+        if (link == "symbolic") File.CreateSymbolicLink(listed, portal);
+        else
+        {
+            using var ln = Process.Start("ln", [portal, listed])!;
+            ln.WaitForExit();
+            Assert.Equal(0, ln.ExitCode);
+        }
+        var before = Sha(File.ReadAllBytes(portal));
+
+        var run = Batch(dir.Path, "--doors", "--dat", portal);
+
+        Assert.True(run.ExitCode == 6, $"exit {run.ExitCode}\n{run.Out}\n{run.Error}");
+        Assert.Contains($"--out: {listed} is a dat this run reads: acshadow never writes over its input", run.Error);
+        // Refused by the survey before the first write, not by the last look before that file's own write.
+        Assert.Contains("or pass another folder; nothing was written", run.Error);
+        Assert.Equal(before, Sha(File.ReadAllBytes(portal)));
     }
 
     [Fact]
