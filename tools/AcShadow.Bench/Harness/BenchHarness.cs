@@ -115,26 +115,34 @@ public static class BenchHarness
         return Report(log, options, machine, started, full, quarter, scaling, timings, checks, extraRatios);
     }
 
-    /// <summary>Start-up: `--version` against `dump` of the door, as built and as `dotnet tool install` put it on the PATH.</summary>
+    /// <summary>
+    /// Start-up: `--version` against `dump` of the door, as built and as `dotnet tool install` put it on the PATH. The
+    /// five take turns run by run, as batch's job counts do: each is about 30 ms, and one measured after another drifted
+    /// apart by more than the 1.3 target's margin (installed dump / --version 1.32 where the same binary by its own path,
+    /// measured minutes earlier, gave 1.15).
+    /// </summary>
     private static void StartUp(TextWriter log, HarnessOptions options, List<Timing> timings, CachedDat full, string dumpOut)
     {
-        timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "acshadow --version", "full", 1, "none", "whole process",
-            _ => ProcessRunner.Run(options.Cli, ["--version"])));
-        // Again into its own folder (the everyday case: the files are there, unchanged), and into a new one.
-        timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
-            _ => ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
-        timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, "dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
-            _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut]); }));
-        Reset(dumpOut);
+        string[] dump = ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut];
+        var workloads = new List<Workload>
+        {
+            new("acshadow --version", "full", 1, "none", "whole process", "version", _ => ProcessRunner.Run(options.Cli, ["--version"])),
+            // Again into its own folder (the everyday case: the files are there, unchanged), and into a new one.
+            new("dump --setup", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
+                "dump", _ => ProcessRunner.Run(options.Cli, dump)),
+            new("dump --setup, new folder", "full", 1, "disk", $"acshadow dump --setup {DoorSetup} --dat (full) as a whole process, into a folder that does not exist yet",
+                "dump-new", _ => { Reset(dumpOut); return ProcessRunner.Run(options.Cli, dump); }),
+        };
         // The same start-up as users meet it: the command `dotnet tool install` put on the PATH.
         if (options.InstalledCli is { } installed)
         {
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledVersion, "full", 1, "none", $"{installed} --version, whole process",
+            workloads.Add(new(BenchReport.InstalledVersion, "full", 1, "none", $"{installed} --version, whole process", "installed-version",
                 _ => ProcessRunner.Run(installed, ["--version"])));
-            timings.Add(Measure(log, options with { Repetitions = options.StartupRepetitions }, BenchReport.InstalledDump, "full", 1, "disk", $"{installed} dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
-                _ => ProcessRunner.Run(installed, ["dump", "--setup", DoorSetup, "--dat", full.Directory, "--out", dumpOut])));
-            Reset(dumpOut);
+            workloads.Add(new(BenchReport.InstalledDump, "full", 1, "disk", $"{installed} dump --setup {DoorSetup} --dat (full) as a whole process, into the folder it wrote before",
+                "installed-dump", _ => ProcessRunner.Run(installed, dump)));
         }
+        timings.AddRange(MeasureInTurn(log, options with { Repetitions = options.StartupRepetitions }, "start-up (full, whole processes in turn)", workloads));
+        Reset(dumpOut);
     }
 
     /// <summary>The scale dat's busy landblock charted and compiled, and the sample's landblock compiled: per-position ratios.</summary>
@@ -247,26 +255,35 @@ public static class BenchHarness
     }
 
     /// <summary>
-    /// As <see cref="Measure"/> for one workload at several job counts, the counts taking turns: each warmed once,
-    /// then repetition i of every count before repetition i + 1 of any, so a slow stretch of the machine slows
-    /// them alike instead of whichever count ran through it alone.
+    /// As <see cref="Measure"/> for one workload at several job counts, the counts taking turns (<see cref="MeasureInTurn"/>).
     /// </summary>
     private static IReadOnlyList<Timing> MeasureInterleaved(TextWriter log, HarnessOptions options, string name, string size, IReadOnlyList<int> jobCounts, string output,
-        Func<int, string> how, Func<int, int, ProcessRunner.Outcome> run)
+        Func<int, string> how, Func<int, int, ProcessRunner.Outcome> run) =>
+        MeasureInTurn(log, options, $"{name} ({size}, {string.Join(" and ", jobCounts)} job(s) in turn, output: {output})",
+            [.. jobCounts.Select(jobs => new Workload(name, size, jobs, output, how(jobs), $"j{jobs}", i => run(jobs, i)))]);
+
+    /// <summary>One timed workload of <see cref="MeasureInTurn"/>; <paramref name="Tag"/> names its runs in the log.</summary>
+    private sealed record Workload(string Name, string Size, int Jobs, string Output, string How, string Tag, Func<int, ProcessRunner.Outcome> Run);
+
+    /// <summary>
+    /// Workloads whose times a ratio compares, taking turns: each warmed once, then repetition i of every one before
+    /// repetition i + 1 of any, so a slow stretch of the machine slows them alike instead of whichever ran through it alone.
+    /// </summary>
+    private static IReadOnlyList<Timing> MeasureInTurn(TextWriter log, HarnessOptions options, string title, IReadOnlyList<Workload> workloads)
     {
-        log.Write($"{name} ({size}, {string.Join(" and ", jobCounts)} job(s) in turn, output: {output}): warm-up, then");
-        foreach (var jobs in jobCounts) run(jobs, -1);
-        var outcomes = jobCounts.ToDictionary(jobs => jobs, _ => new List<ProcessRunner.Outcome>());
+        log.Write($"{title}: warm-up, then");
+        foreach (var workload in workloads) workload.Run(-1);
+        var outcomes = workloads.Select(_ => new List<ProcessRunner.Outcome>()).ToArray();
         for (var i = 0; i < options.Repetitions; i++)
-            foreach (var jobs in jobCounts)
+            for (var k = 0; k < workloads.Count; k++)
             {
-                var outcome = run(jobs, i);
-                outcomes[jobs].Add(outcome);
-                log.Write(string.Create(CultureInfo.InvariantCulture, $" j{jobs} {outcome.Seconds:0.000}s"));
+                var outcome = workloads[k].Run(i);
+                outcomes[k].Add(outcome);
+                log.Write(string.Create(CultureInfo.InvariantCulture, $" {workloads[k].Tag} {outcome.Seconds:0.000}s"));
             }
         log.WriteLine();
-        return [.. jobCounts.Select(jobs => new Timing(name, size, jobs, [.. outcomes[jobs].Select(o => o.Seconds)], [.. outcomes[jobs].Select(o => o.PeakMiB)],
-            [.. outcomes[jobs].Select(o => o.CpuSeconds).Where(double.IsFinite)], how(jobs), output))];
+        return [.. workloads.Select((w, k) => new Timing(w.Name, w.Size, w.Jobs, [.. outcomes[k].Select(o => o.Seconds)], [.. outcomes[k].Select(o => o.PeakMiB)],
+            [.. outcomes[k].Select(o => o.CpuSeconds).Where(double.IsFinite)], w.How, w.Output))];
     }
 
     /// <summary>The bench's own entry assembly, run again as a child process for the floor.</summary>
