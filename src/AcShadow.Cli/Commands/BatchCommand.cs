@@ -222,7 +222,7 @@ public static class BatchCommand
     private static IReadOnlySet<string> RefuseForeignFiles(OutputFolder folder, BatchPlan plan, OutputFormats formats)
     {
         var outDir = folder.Root;
-        // A folder that was empty holds nothing to refuse (and no index): on a first run that is every planned path's two stats saved.
+        // A folder that was empty holds nothing to refuse (and no index): on a first run that is a look at every planned path saved.
         if (folder.StartedEmpty) return new HashSet<string>(StringComparer.Ordinal);
         var listed = IndexListing.Read(outDir);
         // Each path with the head a file of its format starts with, made only for the few that need a look inside.

@@ -41,9 +41,9 @@ public static class IncrementalStateFile
     private const int HexLength = 2 * SHA256.HashSizeInBytes;
 
     /// <summary>
-    /// Whether the file is exactly what <see cref="Write"/> makes of its body: the checksum member last, and the
-    /// bytes around it hashing to it. Checked over the bytes as read; serialising a retail state again to hash
-    /// it cost an incremental run with nothing to do a fifth of its time (9.5 MB on the 7,000-Setup dat).
+    /// Whether the file carries its checksum as <see cref="Write"/> lays it out (the member last, before the closing
+    /// brace) and the bytes around the member hash to it. Checked over the bytes as read: serialising a retail state
+    /// again to hash it cost an incremental run with nothing to do a fifth of its time (9.5 MB on the 7,000-Setup dat).
     /// </summary>
     public static bool HoldsItsChecksum(ReadOnlySpan<byte> file)
     {
