@@ -1,4 +1,3 @@
-using System.Buffers;
 using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
@@ -19,7 +18,6 @@ using AcShadow.Files;
 using AcShadow.Fixtures.Formats;
 using AcShadow.Fixtures.Json;
 using AcShadow.Fixtures.Shapes;
-using Microsoft.Win32.SafeHandles;
 
 namespace AcShadow.Cli.Commands;
 
@@ -286,54 +284,14 @@ public static class BatchCommand
         new(ExitCodes.Interrupted, string.Create(CultureInfo.InvariantCulture,
             $"{Interrupt.Word}: {files} file(s) ({bytes} bytes) were written to {outDir}, each whole; the folder is incomplete (no index.json, so verify calls it an incomplete run): run the same batch again to complete it"));
 
-    /// <summary>
-    /// Whether a file the previous run wrote still holds exactly the bytes it recorded: its SHA-256, not only
-    /// its size (a same-length edit keeps the size). A link or anything but a regular file is not reused.
-    /// </summary>
+    /// <summary>Whether a file the previous run wrote still holds exactly the bytes it recorded (<see cref="FileDigest.Holds"/>), inside the folder.</summary>
     private static bool HoldsRecordedBytes(string outDir, FileEntry file) => HoldsBytes(outDir, file.RelativePath, file.Bytes, file.Sha256);
 
-    private static bool HoldsBytes(string outDir, string relativePath, long bytes, string sha256)
-    {
-        var target = OutputPaths.Target(outDir, relativePath);
-        if (FileKinds.Of(target) != FileKind.Regular) return false;
-        try
-        {
-            using var handle = File.OpenHandle(target, FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete);
-            return RandomAccess.GetLength(handle) == bytes && Convert.ToHexStringLower(Sha256Of(handle)) == sha256;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            return false;
-        }
-    }
+    private static bool HoldsBytes(string outDir, string relativePath, long bytes, string sha256) =>
+        FileDigest.Holds(OutputPaths.Target(outDir, relativePath), bytes, sha256);
 
     /// <summary>
-    /// A file's SHA-256 read through one rented buffer: a stream's own 64 KB buffer for each of the previous run's
-    /// files (22,354 on the scale dat) was 1.4 GB of garbage, and a quarter of an incremental run went to collecting it.
-    /// </summary>
-    private static byte[] Sha256Of(SafeFileHandle handle)
-    {
-        using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
-        var buffer = ArrayPool<byte>.Shared.Rent(1 << 18);
-        try
-        {
-            long at = 0;
-            int read;
-            while ((read = RandomAccess.Read(handle, buffer, at)) > 0)
-            {
-                hash.AppendData(buffer, 0, read);
-                at += read;
-            }
-            return hash.GetHashAndReset();
-        }
-        finally
-        {
-            ArrayPool<byte>.Shared.Return(buffer);
-        }
-    }
-
-    /// <summary>
-    /// The last state read: whether its file is byte for byte what the writer makes (<see cref="IncrementalStateFile.HoldsItsChecksum"/>),
+    /// The last state read: whether its file carries its checksum as the writer lays it out (<see cref="IncrementalStateFile.TryRead(byte[], out bool)"/>),
     /// and the file's size and SHA-256, to tell later that it still holds those bytes.
     /// </summary>
     private sealed record LastState(IncrementalState State, bool AsWritten, long Bytes, string Sha256);
@@ -347,8 +305,8 @@ public static class BatchCommand
             // A regular file only: a link (or a FIFO) is not this folder's state.
             if (FileKinds.Of(path) != FileKind.Regular) return null;
             var bytes = File.ReadAllBytes(path);
-            return IncrementalStateFile.TryRead(bytes) is { } state
-                ? new LastState(state, IncrementalStateFile.HoldsItsChecksum(bytes), bytes.Length, Convert.ToHexStringLower(SHA256.HashData(bytes)))
+            return IncrementalStateFile.TryRead(bytes, out var asWritten) is { } state
+                ? new LastState(state, asWritten, bytes.Length, Convert.ToHexStringLower(SHA256.HashData(bytes)))
                 : null;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)

@@ -45,7 +45,7 @@ public static class IncrementalStateFile
     /// brace) and the bytes around the member hash to it. Checked over the bytes as read: serialising a retail state
     /// again to hash it cost an incremental run with nothing to do a fifth of its time (9.5 MB on the 7,000-Setup dat).
     /// </summary>
-    public static bool HoldsItsChecksum(ReadOnlySpan<byte> file)
+    private static bool HoldsItsChecksum(ReadOnlySpan<byte> file)
     {
         var member = file.Length - Closing.Length - MemberHead.Length - HexLength - 1;
         if (member < 0 || !file.EndsWith(Closing) || !file[member..].StartsWith(MemberHead) || file[^(Closing.Length + 1)] != '"') return false;
@@ -68,8 +68,12 @@ public static class IncrementalStateFile
             .Add("diagnostics", s.Diagnostics)
             .Add("files", JsonArr.Of(s.Files, BatchIndexWriter.File))));
 
-    public static IncrementalState? TryRead(byte[] utf8)
+    public static IncrementalState? TryRead(byte[] utf8) => TryRead(utf8, out _);
+
+    /// <summary>As <see cref="TryRead(byte[])"/>; <paramref name="asWritten"/>: the file carries its checksum as <see cref="Write"/> lays it out (<see cref="HoldsItsChecksum"/>).</summary>
+    public static IncrementalState? TryRead(byte[] utf8, out bool asWritten)
     {
+        asWritten = false;
         try
         {
             using var doc = JsonDocument.Parse(utf8);
@@ -90,7 +94,8 @@ public static class IncrementalStateFile
                     f.GetProperty("sha256").GetString()!)).ToArray())).ToArray();
             var state = new IncrementalState(root.GetProperty("tool").GetString()!, setups);
             // Laid out otherwise (by hand, or the small state written on one line): the checksum of the state as read, serialised again.
-            return HoldsItsChecksum(utf8) || (root.TryGetProperty("sha256", out var sum) && sum.ValueKind == JsonValueKind.String
+            asWritten = HoldsItsChecksum(utf8);
+            return asWritten || (root.TryGetProperty("sha256", out var sum) && sum.ValueKind == JsonValueKind.String
                 && sum.GetString() == Checksum(CanonicalJsonWriter.WriteUtf8(Body(state)))) ? state : null;
         }
         catch (Exception e) when (e is JsonException or InvalidOperationException or KeyNotFoundException or FormatException)
