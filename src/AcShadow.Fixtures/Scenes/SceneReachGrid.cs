@@ -32,13 +32,8 @@ internal sealed class SceneReachGrid
     // entry << 1 | gated and the offset of its program in _programs, −1: ask the entry whole), or minus the index of
     // its eight children in _cells.
     private const int ClearCode = 0, BlockedCode = 1, FrontierBase = 2;
-    /// <summary>
-    /// Octree levels under a top cell: the finest voxel is a top cell's edge / 16. Four, not five: each level is one more
-    /// dependent read a lookup can miss the cache on, and 2 m top cells instead of 4 m reach the same depth one read
-    /// sooner. The finest voxel stays r/4 up to 2^18 top cells (2.1 million m³ for a 0.5 m mover); a scene larger runs out of
-    /// budget above it anyway (docs/performance.md, eleventh session).
-    /// </summary>
-    private const int Levels = 4;
+    /// <summary>Octree levels under a top cell: the finest voxel is a top cell's edge / 32.</summary>
+    private const int Levels = 5;
     /// <summary>At most this many top cells; a wider scene gets larger ones.</summary>
     private const int MaxTopCells = 1 << 18;
     /// <summary>A frontier cheaper than this (turns, broad phases, nodes and polygons) is not split further.</summary>
