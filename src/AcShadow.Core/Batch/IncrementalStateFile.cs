@@ -92,6 +92,8 @@ public static class IncrementalStateFile
                     f.GetProperty("polygons").GetInt32(),
                     f.GetProperty("bytes").GetInt64(),
                     f.GetProperty("sha256").GetString()!)).ToArray())).ToArray();
+            // One record a Setup: reuse and the unchanged check key records by Setup, and a second one is no state this tool wrote.
+            if (setups.Select(s => s.Id).Distinct().Count() != setups.Length) return null;
             var state = new IncrementalState(root.GetProperty("tool").GetString()!, setups);
             // Laid out otherwise (by hand, or the small state written on one line): the checksum of the state as read, serialised again.
             asWritten = HoldsItsChecksum(utf8);

@@ -121,4 +121,15 @@ public sealed class IncrementalStateFileTests
         Assert.Equal(body[..^2] + $", \"sha256\": \"{sum}\"}}\n", Encoding.UTF8.GetString(written));
         Assert.Equal("k", IncrementalStateFile.TryRead(written)?.Tool);
     }
+
+    [Fact]
+    public void A_state_listing_one_setup_twice_is_not_a_state_even_with_a_checksum_that_holds()
+    {
+        // Written by hand with a fresh checksum: reuse keys records by Setup, so a second record for one is refused
+        // when read (read as no state: everything exported), never met later as an exception.
+        var twice = new IncrementalState(State.Tool, [State.Setups[0], State.Setups[0] with { Fingerprint = new string('f', 32) }]);
+        var written = IncrementalStateFile.Write(twice);
+        Assert.Null(IncrementalStateFile.TryRead(written));
+        Assert.NotNull(IncrementalStateFile.TryRead(IncrementalStateFile.Write(State)));
+    }
 }
